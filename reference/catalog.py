@@ -1,0 +1,141 @@
+"""Reading the catalog: ``reference/claims/chNN.toml`` and ``chA1.toml``, one file per chapter.
+
+``read_catalog`` parses every file and checks each entry against the schema; it does not need
+the book. ``reference.validate`` then checks the entries against each other, the model and the
+text. Both report every problem found, one line each (file, claim id, field), in a
+``CatalogError``.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from collections.abc import Iterator
+from dataclasses import dataclass
+from importlib.resources import files
+from importlib.resources.abc import Traversable
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ValidationError
+
+from reference.schema import CatalogError, Claim, Excluded, Meta, Problem, Slip
+
+CLAIMS_PACKAGE_DIR = "claims"
+
+
+@dataclass(frozen=True)
+class ChapterFile:
+    """One catalog file: its name, header, claims, hand exclusions and slips."""
+
+    name: str
+    stem: str
+    meta: Meta
+    claims: tuple[Claim, ...]
+    excluded: tuple[Excluded, ...]
+    slips: tuple[Slip, ...]
+
+
+@dataclass(frozen=True)
+class Catalog:
+    """All chapter files, in book order."""
+
+    files: tuple[ChapterFile, ...]
+
+    def claims(self) -> Iterator[tuple[ChapterFile, Claim]]:
+        """Every claim with the file that holds it, in file order then line order."""
+        for chapter_file in self.files:
+            for claim in chapter_file.claims:
+                yield chapter_file, claim
+
+    def by_id(self) -> dict[str, Claim]:
+        """Claims by id (ids are unique in a valid catalog)."""
+        return {claim.id: claim for _, claim in self.claims()}
+
+    def file_of(self) -> dict[str, ChapterFile]:
+        """The file of each claim id."""
+        return {claim.id: f for f, claim in self.claims()}
+
+
+def default_directory() -> Traversable:
+    """The catalog shipped with the package: ``reference/claims``."""
+    return files("reference").joinpath(CLAIMS_PACKAGE_DIR)
+
+
+def display_name(path: Traversable | Path) -> str:
+    """How problem lines name a catalog file: ``reference/claims/ch08.toml``."""
+    return f"reference/{CLAIMS_PACKAGE_DIR}/{path.name}"
+
+
+def _entry_problems(name: str, ident: str, err: ValidationError) -> list[Problem]:
+    out = []
+    for e in err.errors():
+        field = ".".join(str(part) for part in e["loc"] if not isinstance(part, int)) or "-"
+        if e["type"] == "missing":
+            message = "required field is missing"
+        elif e["type"] == "extra_forbidden":
+            message = "unknown field (not in schema 1)"
+        else:
+            message = e["msg"]
+        out.append(Problem(name, ident, field, message))
+    return out
+
+
+def _entries(
+    name: str, raw: dict[str, Any], table: str, model: type[BaseModel], problems: list[Problem]
+) -> tuple:
+    rows = raw.get(table, [])
+    if not isinstance(rows, list):
+        problems.append(Problem(name, "-", table, f"[[{table}]] must be an array of tables"))
+        return ()
+    out = []
+    for i, row in enumerate(rows, start=1):
+        ident = row.get("id") if isinstance(row.get("id"), str) else None
+        if ident is None:
+            line = row.get("line", row.get("lines", "?"))
+            ident = f"{table} #{i} (line {line})"
+        try:
+            out.append(model.model_validate(row))
+        except ValidationError as err:
+            problems.extend(_entry_problems(name, ident, err))
+    return tuple(out)
+
+
+def read_file(path: Traversable | Path, problems: list[Problem]) -> ChapterFile | None:
+    """Parse one catalog file, adding its schema problems to ``problems``."""
+    name = display_name(path)
+    try:
+        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+    except tomllib.TOMLDecodeError as err:
+        problems.append(Problem(name, "-", "-", f"not valid TOML: {err}"))
+        return None
+    unknown = set(raw) - {"meta", "claim", "excluded", "slip"}
+    for table in sorted(unknown):
+        problems.append(Problem(name, "-", table, "unknown table (schema 1 has meta, claim, "
+                                                   "excluded, slip)"))
+    try:
+        meta = Meta.model_validate(raw.get("meta"))
+    except ValidationError as err:
+        problems.extend(_entry_problems(name, "meta", err))
+        return None
+    claims = _entries(name, raw, "claim", Claim, problems)
+    excluded = _entries(name, raw, "excluded", Excluded, problems)
+    slips = _entries(name, raw, "slip", Slip, problems)
+    stem = name.rsplit("/", 1)[-1].removesuffix(".toml")
+    return ChapterFile(name, stem, meta, claims, excluded, slips)
+
+
+def read_catalog(directory: Traversable | Path | None = None) -> Catalog:
+    """Parse every ``ch*.toml`` of ``directory`` (default: the packaged catalog).
+
+    Raises ``CatalogError`` with every schema problem found.
+    """
+    root = directory if directory is not None else default_directory()
+    paths = sorted(
+        (p for p in root.iterdir() if p.name.startswith("ch") and p.name.endswith(".toml")),
+        key=lambda p: p.name,
+    )
+    problems: list[Problem] = []
+    chapter_files = [f for p in paths if (f := read_file(p, problems)) is not None]
+    if problems:
+        raise CatalogError(problems)
+    return Catalog(tuple(chapter_files))

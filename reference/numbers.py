@@ -1,0 +1,193 @@
+"""Printed numbers as values with the precision their digits carry.
+
+A printed value is a string; its precision comes from its digits (statcheck's rule): "7,250" is
+exact to the unit, "0.0100" to 1e-4, "6.282 E6" to 1e3. The half-width ``h`` is half a unit of
+the last counted digit. Fractions, multiples of pi and roots are exact values.
+
+Values are held as exact rationals (``fractions.Fraction``), so that the decimal string and a
+model's binary float are compared without any rounding of either. Irrational printed forms
+("π/3", "√3/2") are held to 50 significant digits, far below any tolerance used.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from decimal import Decimal, InvalidOperation
+from fractions import Fraction
+
+import mpmath
+
+from reference.tokens import normalize
+
+_MP_DIGITS = 50
+
+_DECIMAL = r"\d[\d,]*(?:\.\d+)?|\.\d+"
+_RE_POWER = re.compile(rf"(?P<mant>{_DECIMAL}|\(\d+/\d+\))[·⋅]10(?P<exp>[-+]\d+)")
+_RE_BARE_POWER = re.compile(r"10(?P<exp>-\d{1,2})")
+_RE_E = re.compile(rf"(?P<mant>{_DECIMAL}) ?[Ee](?P<exp>[-+]?\d+)")
+_RE_CARET = re.compile(rf"(?P<base>{_DECIMAL})\^(?P<exp>[-+]?\d+)")
+_RE_FRACTION = re.compile(r"(?P<p>\d+)/(?P<q>\d+)")
+_RE_PI = re.compile(r"(?P<a>\d*)π(?:/(?P<b>\d+))?|(?P<c>\d+)/π")
+_RE_ROOT = re.compile(r"(?P<a>\d*)√(?P<r>\d+)(?:/(?P<b>\d+))?|(?P<c>\d+)/√(?P<s>\d+)")
+_RE_DECIMAL = re.compile(rf"(?:{_DECIMAL})")
+
+# Exact printed forms are compared within this many units in the last place of a double.
+EXACT_ULPS = 16
+
+
+class NumberFormatError(ValueError):
+    """A printed or ``means`` string that is not a number this module can read."""
+
+
+@dataclass(frozen=True)
+class Printed:
+    """A printed number: exact value, half-width and the facts the comparison needs.
+
+    ``quantum`` is the unit of the last counted digit (2h); ``None`` for an exact form.
+    ``irrational`` marks pi and root forms, whose ``value`` is a 50-digit approximation.
+    """
+
+    text: str
+    value: Fraction
+    half_width: Fraction
+    exact: bool
+    absolute: bool
+    mark: str
+    quantum: Fraction | None
+    irrational: bool = False
+
+    @property
+    def tolerance(self) -> Fraction:
+        """Half-width used by the comparison: h, or a few ulp for an exact form."""
+        if self.exact:
+            return Fraction(EXACT_ULPS * math.ulp(abs(float(self.value)) or 1e-300))
+        return self.half_width
+
+
+def _decimal(text: str) -> Decimal:
+    try:
+        return Decimal(text.replace(",", ""))
+    except InvalidOperation as err:  # pragma: no cover - the patterns admit only digits
+        raise NumberFormatError(f"not a number: {text!r}") from err
+
+
+def _quantum(dec: Decimal, sigfigs: int | None) -> Fraction:
+    """The unit of the last counted digit of ``dec`` (all digits, or the first ``sigfigs``)."""
+    exponent = dec.as_tuple().exponent
+    assert isinstance(exponent, int)
+    if sigfigs is not None:
+        if dec == 0:
+            raise NumberFormatError("sigfigs cannot be applied to a printed zero")
+        leading = dec.adjusted()
+        exponent = leading - sigfigs + 1
+    return Fraction(10) ** exponent
+
+
+def _mp(value: mpmath.mpf) -> Fraction:
+    mantissa, exponent = mpmath.mpf(value).man_exp
+    return Fraction(int(mantissa)) * Fraction(2) ** int(exponent)
+
+
+def _exact(value: Fraction) -> tuple[Fraction, Fraction, bool, Fraction | None]:
+    return value, Fraction(0), True, None
+
+
+def _inexact(value: Fraction, quantum: Fraction) -> tuple[Fraction, Fraction, bool, Fraction]:
+    return value, quantum / 2, False, quantum
+
+
+def parse_number(text: str, *, sigfigs: int | None = None) -> Printed:
+    """Read a printed token or a ``means`` string.
+
+    Accepts decimals with thousands commas, signs (``-``, ``−``, ``–``, ``+``, ``±``), ``%`` and
+    ``°`` marks, E-notation ("6.282 E6", "1.67e-27"), the book's flattened powers of ten
+    ("2·10-27", "(2/3)·10-27", "10-25"), powers written with a caret ("60^2", "10^-25"; exact
+    when the base is an integer, else the base's half-width propagated), fractions "p/q",
+    multiples and fractions of pi ("2π/3", "180/π") and roots ("√3/2", "1/√2").
+    ``sigfigs`` counts fewer significant digits than printed. Raises ``NumberFormatError``.
+    """
+    raw = text
+    s = normalize(text).strip()
+    absolute = s.startswith("±")
+    if absolute:
+        s = s[1:]
+    negative = s.startswith("-")
+    if s[:1] in "+-":
+        s = s[1:]
+    mark = ""
+    if s[-1:] in ("%", "°"):
+        mark, s = s[-1], s[:-1]
+    if not s:
+        raise NumberFormatError(f"not a number: {raw!r}")
+    value, half, exact, quantum = _body(s, raw, sigfigs)
+    if sigfigs is not None and exact:
+        raise NumberFormatError(f"sigfigs cannot apply to the exact form {raw!r}")
+    if negative:
+        value = -value
+    irrational = bool(_RE_PI.fullmatch(s) or _RE_ROOT.fullmatch(s))
+    return Printed(raw, value, half, exact, absolute, mark, quantum, irrational)
+
+
+def _body(
+    s: str, raw: str, sigfigs: int | None
+) -> tuple[Fraction, Fraction, bool, Fraction | None]:
+    if m := _RE_POWER.fullmatch(s):
+        scale = Fraction(10) ** int(m["exp"])
+        mant = m["mant"]
+        if mant.startswith("("):
+            p, q = mant[1:-1].split("/")
+            return _exact(Fraction(int(p), int(q)) * scale)
+        dec = _decimal(mant)
+        return _inexact(Fraction(dec) * scale, _quantum(dec, sigfigs) * scale)
+    if m := _RE_BARE_POWER.fullmatch(s):
+        return _exact(Fraction(10) ** int(m["exp"]))
+    if m := _RE_E.fullmatch(s):
+        dec = _decimal(m["mant"])
+        scale = Fraction(10) ** int(m["exp"])
+        return _inexact(Fraction(dec) * scale, _quantum(dec, sigfigs) * scale)
+    if m := _RE_CARET.fullmatch(s):
+        base_dec = _decimal(m["base"])
+        exp = int(m["exp"])
+        base = Fraction(base_dec)
+        value = base**exp
+        if base_dec.as_tuple().exponent == 0 and sigfigs is None:
+            return _exact(value)
+        h_base = _quantum(base_dec, sigfigs) / 2
+        half = abs(exp) * abs(base) ** (exp - 1) * h_base
+        return value, half, False, 2 * half
+    if m := _RE_FRACTION.fullmatch(s):
+        if int(m["q"]) == 0:
+            raise NumberFormatError(f"zero denominator in {raw!r}")
+        return _exact(Fraction(int(m["p"]), int(m["q"])))
+    with mpmath.workdps(_MP_DIGITS):
+        if m := _RE_PI.fullmatch(s):
+            if m["c"]:
+                return _exact(_mp(mpmath.mpf(int(m["c"])) / mpmath.pi))
+            a = int(m["a"]) if m["a"] else 1
+            b = int(m["b"]) if m["b"] else 1
+            return _exact(_mp(a * mpmath.pi / b))
+        if m := _RE_ROOT.fullmatch(s):
+            if m["c"]:
+                return _exact(_mp(int(m["c"]) / mpmath.sqrt(int(m["s"]))))
+            a = int(m["a"]) if m["a"] else 1
+            b = int(m["b"]) if m["b"] else 1
+            return _exact(_mp(a * mpmath.sqrt(int(m["r"])) / b))
+    if _RE_DECIMAL.fullmatch(s):
+        dec = _decimal(s)
+        return _inexact(Fraction(dec), _quantum(dec, sigfigs))
+    raise NumberFormatError(f"not a number this catalog can read: {raw!r}")
+
+
+def significant_digits(text: str) -> str:
+    """The digits of a printed decimal without sign, separators, point or leading zeros."""
+    digits = "".join(c for c in normalize(text) if c.isdigit())
+    return digits.lstrip("0") or "0"
+
+
+def decimals_of(text: str) -> int:
+    """Number of digits after the point in a printed decimal (0 if none)."""
+    s = normalize(text).strip().rstrip("%°")
+    mantissa = re.split(r"[Ee·⋅]", s)[0]
+    return len(mantissa.split(".")[1]) if "." in mantissa else 0

@@ -1,0 +1,151 @@
+"""The catalog schema 1 (design section 2) as validated models.
+
+pydantic checks each entry's fields, their types and vocabularies, and rejects unknown fields
+(a misspelt field is an error, never silently ignored). The rules that tie fields together or
+to the book live in ``reference.validate``; both report problems as ``Problem`` lines naming the
+file, the claim id and the field.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, StringConstraints
+from typing_extensions import TypeAliasType
+
+SCHEMA_VERSION = 1
+
+Kind = Literal["derived", "given", "constant", "identity", "count"]
+Expect = Literal["verified", "rounding", "erratum", "given"]
+Relation = Literal["=", "~", "<", ">", "<=", ">=", "between", "order"]
+Garble = Literal[
+    "superscript", "root-lost", "fraction-split", "doubled-glyph", "minus-lost", "other"
+]
+DiagnosisKind = Literal[
+    "decimal-shift",
+    "digit-swap",
+    "dropped-digit",
+    "extra-digit",
+    "sign",
+    "factor",
+    "swapped-values",
+    "arithmetic",
+    "wrong-formula",
+    "inconsistent",
+    "dated",
+    "other",
+]
+HAND_REASONS = ("notation", "axis-tick", "symbolic-matrix", "restates", "not-a-claim")
+
+Text = Annotated[str, StringConstraints(min_length=1)]
+Line = Annotated[int, Field(ge=1)]
+
+
+@dataclass(frozen=True, order=True)
+class Problem:
+    """One catalog problem: where (file, claim id, field) and what."""
+
+    file: str
+    id: str
+    field: str
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.file}: {self.id}: field '{self.field}': {self.message}"
+
+
+class CatalogError(Exception):
+    """The catalog is invalid; ``problems`` holds one line per problem."""
+
+    def __init__(self, problems: list[Problem]) -> None:
+        self.problems = sorted(set(problems))
+        super().__init__("\n".join(str(p) for p in self.problems))
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, strict=True)
+
+
+class ClaimRef(_Strict):
+    """``{ claim = "ID" }`` in ``args``: that claim's value."""
+
+    claim: Text
+
+
+ArgValue = TypeAliasType(
+    "ArgValue", "int | float | str | ClaimRef | list[ArgValue]"  # type: ignore[misc]
+)
+
+
+class Diagnosis(_Strict):
+    """The curator's diagnosis of an erratum."""
+
+    kind: DiagnosisKind
+    note: Text
+
+
+class Claim(_Strict):
+    """One numeric claim of the book."""
+
+    id: Annotated[str, StringConstraints(pattern=r"^ch(\d\d|A1)\.[A-Za-z0-9][\w.\-]*$")]
+    line: Line
+    quote: Text
+    printed: Text
+    quantity: Text
+    kind: Kind
+    expect: Expect
+    occurrence: Annotated[int, Field(ge=1)] | None = None
+    line_end: Line | None = None
+    means: Text | None = None
+    garble: Garble | None = None
+    unit: Text = "1"
+    model: Annotated[str, StringConstraints(pattern=r"^[a-z_]+\.[a-z_][a-z0-9_]*$")] | None = None
+    args: dict[str, ArgValue] = Field(default_factory=dict)
+    pick: str = ""
+    rounded: bool = False
+    constant: Text | None = None
+    relation: Relation = "="
+    rel_tol: Annotated[float, Field(gt=0, le=0.25)] | None = None
+    bounds: Annotated[list[Text], Field(min_length=2, max_length=2)] | None = None
+    sigfigs: Annotated[int, Field(ge=1)] | None = None
+    precision_reason: Text | None = None
+    restates: Text | None = None
+    assumptions: dict[str, int | float | str] = Field(default_factory=dict)
+    correct: Text | None = None
+    diagnosis: Diagnosis | None = None
+    figure: Text | None = None
+    equation: Text | None = None
+    note: Text | None = None
+    depends_on: list[Text] = Field(default_factory=list)
+
+
+class Excluded(_Strict):
+    """A hand exclusion: one token (line, token, occurrence) or a symbolic range of lines."""
+
+    reason: Text
+    line: Line | None = None
+    token: Text | None = None
+    occurrence: Annotated[int, Field(ge=1)] | None = None
+    lines: Annotated[list[Line], Field(min_length=2, max_length=2)] | None = None
+
+
+class Slip(_Strict):
+    """A non-numeric slip: a wrong label or equation reference; listed apart from errata."""
+
+    id: Annotated[str, StringConstraints(pattern=r"^ch(\d\d|A1)\.[A-Za-z0-9][\w.\-]*$")]
+    line: Line
+    quote: Text
+    printed: Text
+    correct: Text
+    note: Text
+
+
+class Meta(_Strict):
+    """A chapter file's header."""
+
+    chapter: Text
+    title: Text
+    lines: Annotated[list[Line], Field(min_length=2, max_length=2)]
+    complete: bool
+    schema_: Literal[1] = Field(alias="schema")

@@ -1,0 +1,393 @@
+"""The catalog's rules beyond single fields: against each other, mechmodel and the book.
+
+Every problem is one ``Problem`` line (file, claim id, field). ``validate`` returns them all;
+``checked_catalog`` raises ``CatalogError`` if there is any. The rules are listed in
+``RULES`` with the field they speak of; checks/test_integrity.py feeds each a bad entry.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from fractions import Fraction
+from functools import cache
+
+from reference.book import Book, identity
+from reference.catalog import Catalog, ChapterFile, read_catalog
+from reference.locate import matches, pick_occurrence
+from reference.models import check_signature, pick_steps, resolve
+from reference.numbers import NumberFormatError, Printed, parse_number, significant_digits
+from reference.schema import HAND_REASONS, CatalogError, Claim, ClaimRef, Excluded, Problem
+from reference.tables import NO_CONVERSION, constants, units
+from reference.tokens import Token, normalize, tokenize_line
+
+HEDGES = (
+    "about", "~", "nearly", "some", "roughly", "approximately", "almost", "around", "≈",
+    "order", "over", "under", "less than", "more than", "or so", "estimate",
+)  # fmt: skip
+
+
+@cache
+def line_tokens(book: Book, number: int) -> list[Token]:
+    """The tokens of line ``number`` of ``book`` (cached per line)."""
+    return tokenize_line(book.line(number), number)
+
+
+def claim_refs(value: object) -> Iterator[str]:
+    """Every ``{ claim = ID }`` inside an ``args`` value."""
+    if isinstance(value, ClaimRef):
+        yield value.claim
+    elif isinstance(value, list):
+        for item in value:
+            yield from claim_refs(item)
+
+
+def references(claim: Claim) -> list[str]:
+    """The ids a claim uses: in ``args`` and ``restates``."""
+    out = [ref for value in claim.args.values() for ref in claim_refs(value)]
+    if claim.restates:
+        out.append(claim.restates)
+    return out
+
+
+def parsed(claim: Claim) -> Printed:
+    """The value a claim states: ``means`` where given, else ``printed``, with its sigfigs."""
+    return parse_number(claim.means or claim.printed, sigfigs=claim.sigfigs)
+
+
+def superscript_ok(printed: str, means: str) -> bool:
+    """Whether some split of the printed digits into base and exponent gives ``means``.
+
+    "1040" can be 10^40, "602" 60^2, "6·1024" 6·10^24, "10-25" 10^-25: the mantissa before a
+    multiplication dot is kept, the rest is split at every place.
+    """
+    target = parse_number(means).value
+    s = normalize(printed).strip()
+    sign = -1 if s.startswith("-") else 1
+    s = s.lstrip("-+")
+    mantissa = Fraction(1)
+    for dot in "·⋅":
+        if dot in s:
+            head, _, s = s.partition(dot)
+            mantissa = parse_number(head).value
+    for i in range(1, len(s)):
+        base, exp = s[:i], s[i:]
+        if re.fullmatch(r"\d+(?:\.\d+)?", base) and re.fullmatch(r"-?\d+", exp):
+            if sign * mantissa * Fraction(base) ** int(exp) == target:
+                return True
+    return False
+
+
+class _Checker:
+    def __init__(self, catalog: Catalog, book: Book | None) -> None:
+        self.catalog = catalog
+        self.book = book
+        self.problems: list[Problem] = []
+        self.ids: dict[str, str] = {}
+
+    def add(self, f: ChapterFile, ident: str, field: str, message: str) -> None:
+        self.problems.append(Problem(f.name, ident, field, message))
+
+    # -- files -------------------------------------------------------------------------
+    def check_file(self, f: ChapterFile) -> None:
+        ident = identity()
+        keys = {c.file_stem: c for c in ident.chapters}
+        chapter = keys.get(f.stem)
+        if chapter is None:
+            self.add(f, "meta", "-", f"no chapter has file name {f.stem}.toml")
+            return
+        if f.meta.chapter != chapter.key:
+            self.add(f, "meta", "chapter", f"is {f.meta.chapter!r}, the file is chapter "
+                                           f"{chapter.key!r}")
+        if f.meta.lines != [chapter.start, chapter.end]:
+            self.add(f, "meta", "lines", f"is {f.meta.lines}, the chapter is "
+                                         f"[{chapter.start}, {chapter.end}] (book.toml)")
+
+    # -- claims ------------------------------------------------------------------------
+    def check_claim(self, f: ChapterFile, c: Claim) -> None:
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        if not c.id.startswith(f.stem + "."):
+            add("id", f"must start with {f.stem}. (its file)")
+        if c.id in self.ids:
+            add("id", f"duplicate id (also in {self.ids[c.id]})")
+        self.ids.setdefault(c.id, f.name)
+        lo, hi = f.meta.lines
+        if not lo <= c.line <= hi:
+            add("line", f"{c.line} is outside the chapter's lines [{lo}, {hi}]")
+        if c.line_end is not None and not c.line < c.line_end <= hi:
+            add("line_end", f"{c.line_end} must be after line {c.line} and inside the chapter")
+        self.check_values(f, c)
+        self.check_kind(f, c)
+        self.check_model(f, c)
+        self.check_relation(f, c)
+        if self.book is not None and lo <= c.line <= hi:
+            self.check_text(f, c)
+
+    def check_values(self, f: ChapterFile, c: Claim) -> None:
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        try:
+            parse_number(c.printed)
+        except NumberFormatError as err:
+            if c.means is None:
+                add("printed", f"{err}; a garbled number needs 'means' and 'garble'")
+        if (c.means is None) != (c.garble is None):
+            add("garble" if c.means else "means", "'means' and 'garble' go together")
+        if c.means is not None:
+            if c.note is None:
+                add("note", "a 'means' needs a note citing the evidence")
+            try:
+                parse_number(c.means)
+            except NumberFormatError as err:
+                add("means", str(err))
+            else:
+                if c.garble == "superscript" and not superscript_ok(c.printed, c.means):
+                    add("means", f"no split of {c.printed!r} into base and exponent gives "
+                                 f"{c.means!r}")
+        if c.sigfigs is not None:
+            if c.precision_reason is None:
+                add("precision_reason", "reduced 'sigfigs' needs a precision_reason")
+            if not any(h in c.quote.lower() for h in HEDGES):
+                add("sigfigs", f"the quote has no word that hedges precision {HEDGES}")
+            try:
+                parsed(c)
+            except NumberFormatError as err:
+                add("sigfigs", str(err))
+        if c.unit not in NO_CONVERSION and c.unit not in units():
+            add("unit", f"unknown unit {c.unit!r} (see reference/units.toml)")
+        mark = c.printed.strip()[-1:]
+        if mark == "%" and c.unit != "percent":
+            add("unit", "a printed percent needs unit = \"percent\"")
+        if mark == "°" and c.unit != "deg":
+            add("unit", "a printed degree mark needs unit = \"deg\"")
+        if c.assumptions and c.precision_reason is None:
+            add("precision_reason", "assumptions need a precision_reason")
+
+    def check_kind(self, f: ChapterFile, c: Claim) -> None:
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        if (c.kind == "given") != (c.expect == "given"):
+            add("expect", "a given (and only a given) expects \"given\"")
+        if c.kind in ("given", "constant") and (c.model or c.args or c.pick):
+            add("model", f"a {c.kind} claim has no model, args or pick")
+        if c.rounded and c.kind != "given":
+            add("rounded", "only a given may be marked rounded")
+        if c.kind == "constant":
+            if c.constant is None:
+                add("constant", "a constant claim names its entry of constants.toml")
+            elif c.constant not in constants():
+                add("constant", f"no entry {c.constant!r} in reference/constants.toml")
+        elif c.constant is not None:
+            add("constant", "only a constant claim names a constants.toml entry")
+        if c.expect == "erratum":
+            if c.correct is None:
+                add("correct", "an erratum needs the correct value")
+            if c.diagnosis is None:
+                add("diagnosis", "an erratum needs a diagnosis { kind, note }")
+            if c.correct is not None:
+                self.check_correct(f, c)
+        else:
+            if c.correct is not None:
+                add("correct", "only an erratum has a correct value")
+            if c.diagnosis is not None:
+                add("diagnosis", "only an erratum has a diagnosis")
+        if c.restates is not None and (c.model or c.args):
+            add("restates", "a restatement is not modelled again: no model or args")
+
+    def check_correct(self, f: ChapterFile, c: Claim) -> None:
+        assert c.correct is not None
+        try:
+            correct = parse_number(c.correct, sigfigs=c.sigfigs)
+            stated = parsed(c)
+        except NumberFormatError as err:
+            self.add(f, c.id, "correct", str(err))
+            return
+        same_decimals = correct.quantum == stated.quantum
+        same_figures = len(significant_digits(c.correct)) == len(
+            significant_digits(c.means or c.printed)
+        )
+        if not stated.exact and not (same_decimals or same_figures):
+            self.add(f, c.id, "correct", "write it to the printed number of decimals or of "
+                                         "significant figures")
+
+    def check_model(self, f: ChapterFile, c: Claim) -> None:
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        if c.model is None:
+            if c.args or c.pick:
+                add("model", "args or pick without a model")
+            return
+        try:
+            func = resolve(c.model)
+        except LookupError as err:
+            add("model", f"{c.model!r} does not resolve: {err}")
+            return
+        why = check_signature(func, [*c.args, *c.assumptions])
+        if why:
+            add("args", f"cannot call {c.model}: {why}")
+        try:
+            pick_steps(c.pick)
+        except ValueError as err:
+            add("pick", str(err))
+
+    def check_relation(self, f: ChapterFile, c: Claim) -> None:
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        if c.relation == "~":
+            if c.rel_tol is None:
+                add("rel_tol", "relation '~' needs rel_tol")
+            if c.precision_reason is None:
+                add("precision_reason", "relation '~' needs a precision_reason")
+        elif c.rel_tol is not None:
+            add("rel_tol", "rel_tol goes only with relation '~'")
+        if c.relation == "between":
+            if c.bounds is None:
+                add("bounds", "relation 'between' needs bounds = [lo, hi]")
+            else:
+                try:
+                    lo, hi = (parse_number(b).value for b in c.bounds)
+                except NumberFormatError as err:
+                    add("bounds", str(err))
+                else:
+                    if lo > hi:
+                        add("bounds", "lower bound above upper bound")
+        elif c.bounds is not None:
+            add("bounds", "bounds go only with relation 'between'")
+        if c.kind == "given" and c.relation != "=":
+            add("relation", "a given states its value: relation '='")
+
+    def check_text(self, f: ChapterFile, c: Claim) -> None:
+        assert self.book is not None
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        text = self.book.line(c.line)
+        count = text.count(c.quote)
+        if count != 1:
+            where = "is not on" if count == 0 else f"occurs {count} times on"
+            add("quote", f"{where} line {c.line}: {text.strip()[:80]!r}")
+            return
+        q_start = text.index(c.quote)
+        q_end = q_start + len(c.quote)
+        found = matches(text, line_tokens(self.book, c.line), c.printed)
+        match, why = pick_occurrence(found, c.occurrence)
+        field = "occurrence" if found else "printed"
+        if match is None:
+            tokens = [t.text for t in line_tokens(self.book, c.line)]
+            add(field, f"{c.printed!r} {why}; tokens of line {c.line}: {tokens}")
+            return
+        if c.occurrence is not None and len(found) == 1:
+            add("occurrence", "only one such token on the line: drop 'occurrence'")
+        if not (q_start <= match.start and match.end <= q_end):
+            add("quote", f"does not cover {c.printed!r} at occurrence {c.occurrence or 1}")
+
+    # -- exclusions and slips ------------------------------------------------------------
+    def check_excluded(self, f: ChapterFile, e: Excluded) -> None:
+        ident = f"excluded (line {e.line or e.lines})"
+        add = lambda field, msg: self.add(f, ident, field, msg)  # noqa: E731
+        lo, hi = f.meta.lines
+        word = e.reason.split(":")[0].split()[0] if e.reason.strip() else ""
+        if word not in HAND_REASONS:
+            add("reason", f"must start with one of {HAND_REASONS}")
+        if word == "restates":
+            target = e.reason.split(maxsplit=1)[1:] or [""]
+            if target[0] not in self.catalog.by_id():
+                add("reason", f"restates an unknown claim {target[0]!r}")
+        if word == "not-a-claim" and not e.reason.partition(":")[2].strip():
+            add("reason", "not-a-claim needs its words: 'not-a-claim: why'")
+        if e.lines is not None:
+            if e.line is not None or e.token is not None or e.occurrence is not None:
+                add("lines", "a range exclusion has only lines and reason")
+            a, b = e.lines
+            if not lo <= a <= b <= hi:
+                add("lines", f"{e.lines} must be an ordered range inside [{lo}, {hi}]")
+            return
+        if e.line is None or e.token is None:
+            add("line" if e.line is None else "token", "a token exclusion needs line and token")
+            return
+        if not lo <= e.line <= hi:
+            add("line", f"{e.line} is outside the chapter's lines [{lo}, {hi}]")
+            return
+        if self.book is not None:
+            found = matches(self.book.line(e.line), line_tokens(self.book, e.line), e.token)
+            match, why = pick_occurrence(found, e.occurrence)
+            if match is None:
+                add("token", f"{e.token!r} {why}")
+
+    def check_slip(self, f: ChapterFile, s) -> None:  # noqa: ANN001 - a schema.Slip
+        lo, hi = f.meta.lines
+        if not s.id.startswith(f.stem + "."):
+            self.add(f, s.id, "id", f"must start with {f.stem}.")
+        if s.id in self.ids:
+            self.add(f, s.id, "id", f"duplicate id (also in {self.ids[s.id]})")
+        self.ids.setdefault(s.id, f.name)
+        if not lo <= s.line <= hi:
+            self.add(f, s.id, "line", f"{s.line} is outside [{lo}, {hi}]")
+        elif self.book is not None and self.book.line(s.line).count(s.quote) != 1:
+            self.add(f, s.id, "quote", f"must occur exactly once on line {s.line}")
+
+    # -- across the catalog ---------------------------------------------------------------
+    def check_links(self) -> None:
+        by_id = self.catalog.by_id()
+        file_of = self.catalog.file_of()
+        used: set[str] = set()
+        for f, c in self.catalog.claims():
+            for ref in references(c):
+                used.add(ref)
+                if ref not in by_id:
+                    field = "restates" if ref == c.restates else "args"
+                    self.add(f, c.id, field, f"refers to an unknown claim {ref!r}")
+                elif ref == c.id:
+                    self.add(f, c.id, "args", "a claim cannot refer to itself")
+            for dep in c.depends_on:
+                if dep not in by_id:
+                    self.add(f, c.id, "depends_on", f"unknown claim {dep!r}")
+        for f, c in self.catalog.claims():
+            if c.kind == "given" and c.id not in used and c.restates is None:
+                self.add(f, c.id, "kind", "a given that no claim references (args or restates)")
+            if (
+                f.meta.complete
+                and c.kind in ("derived", "identity", "count")
+                and c.model is None
+                and c.restates is None
+            ):
+                self.add(f, c.id, "model", "unmodeled claim in a chapter marked complete")
+        self.check_cycles(by_id, file_of)
+
+    def check_cycles(self, by_id: dict[str, Claim], file_of: dict[str, ChapterFile]) -> None:
+        state: dict[str, int] = {}
+
+        def visit(ident: str, trail: list[str]) -> None:
+            if state.get(ident) == 2 or ident not in by_id:
+                return
+            if state.get(ident) == 1:
+                cycle = " -> ".join([*trail[trail.index(ident) :], ident])
+                self.add(file_of[ident], ident, "args", f"circular references: {cycle}")
+                return
+            state[ident] = 1
+            for ref in references(by_id[ident]):
+                visit(ref, [*trail, ident])
+            state[ident] = 2
+
+        for ident in by_id:
+            visit(ident, [])
+
+    def run(self) -> list[Problem]:
+        for f in self.catalog.files:
+            self.check_file(f)
+            for c in f.claims:
+                self.check_claim(f, c)
+            for e in f.excluded:
+                self.check_excluded(f, e)
+            for s in f.slips:
+                self.check_slip(f, s)
+        self.check_links()
+        return sorted(set(self.problems))
+
+
+def validate(catalog: Catalog, book: Book | None) -> list[Problem]:
+    """Every problem of ``catalog``; text checks (quotes, tokens) only when ``book`` is given."""
+    return _Checker(catalog, book).run()
+
+
+def checked_catalog(book: Book | None, directory=None) -> Catalog:  # noqa: ANN001
+    """Read and validate the catalog; ``CatalogError`` with one line per problem."""
+    catalog = read_catalog(directory)
+    problems = validate(catalog, book)
+    if problems:
+        raise CatalogError(problems)
+    return catalog

@@ -1,0 +1,174 @@
+"""The ``bangcheck`` command: ``claims`` and ``scan`` (design section 4).
+
+Data on stdout, progress and messages on stderr. Exit 0 on success, 1 when findings fail the
+command's check, 2 on usage errors, an invalid catalog, or a missing or wrong book.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections import Counter
+from collections.abc import Sequence
+from typing import Any
+
+from reference.book import BookError, book_path, chapter_keys, load_book
+from reference.calls import ModelCallError
+from reference.compare import VERDICTS
+from reference.evaluate import Evaluation, evaluate_catalog
+from reference.scan import ScanResult, scan
+from reference.schema import CatalogError
+from reference.validate import checked_catalog
+
+EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="bangcheck",
+        description="Check the numbers of Classical Mechanics with a BANG! (Unit 1).",
+    )
+    sub = parser.add_subparsers(dest="command", required=True)
+    common = argparse.ArgumentParser(add_help=False)
+    common.add_argument("--book", help="path of bang-unit1.txt (default: $BANGCHECK_BOOK)")
+    common.add_argument("--chapter", help='chapters: "8", "0-3", "4,5", "A1" (default: all)')
+
+    claims = sub.add_parser("claims", parents=[common], help="the evaluated catalog")
+    claims.add_argument("--json", action="store_true", help="one JSON object per claim")
+    claims.add_argument("--verdict", choices=VERDICTS, help="only claims with this verdict")
+    claims.add_argument("--strict", action="store_true", help="unmodeled claims also fail")
+
+    scanner = sub.add_parser("scan", parents=[common], help="every number token's status")
+    scanner.add_argument("--json", action="store_true", help="one JSON document")
+    scanner.add_argument("--missing", action="store_true", help="list every missing token")
+    return parser
+
+
+def _fmt(value: Any) -> str:
+    if value is None:
+        return "-"
+    if isinstance(value, list):
+        return "[" + ", ".join(_fmt(v) for v in value) + "]"
+    return f"{value:.10g}" if isinstance(value, float) else str(value)
+
+
+def _failing(evaluation: Evaluation, strict: bool) -> list[str]:
+    return [
+        c.id
+        for c in evaluation
+        if not c.passed and (c.verdict != "unmodeled" or strict)
+    ]
+
+
+def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) -> None:
+    rows = [c for c in evaluation if verdict is None or c.verdict == verdict]
+    if as_json:
+        for c in rows:
+            print(json.dumps(c.to_json(), ensure_ascii=False, sort_keys=False))
+        return
+    width = max((len(c.id) for c in rows), default=2)
+    print(f"{'id':<{width}}  {'line':>5}  {'printed':>12}  {'model':>16}  verdict (expect)")
+    for c in rows:
+        mark = "" if c.passed else "   <-- differs"
+        reason = f" [{c.rounding_reason}]" if c.rounding_reason else ""
+        print(
+            f"{c.id:<{width}}  {c.line:>5}  {c.printed:>12}  {_fmt(c.model_value):>16}  "
+            f"{c.verdict}{reason} ({c.expect}){mark}"
+        )
+
+
+def _claims(args: argparse.Namespace) -> int:
+    book = load_book(book_path(args.book))
+    catalog = checked_catalog(book)
+    evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
+    _print_claims(evaluation, args.json, args.verdict)
+    counts = evaluation.verdict_counts()
+    summary = ", ".join(f"{v} {counts[v]}" for v in VERDICTS if counts[v])
+    print(f"bangcheck: {len(evaluation)} claims: {summary or 'none'}", file=sys.stderr)
+    failing = _failing(evaluation, args.strict)
+    if failing:
+        print(f"bangcheck: {len(failing)} claim(s) differ from expect: "
+              f"{', '.join(failing[:10])}", file=sys.stderr)
+        return EXIT_FINDINGS
+    return EXIT_OK
+
+
+def _scan_json(result: ScanResult) -> dict[str, Any]:
+    return {
+        "chapters": {
+            key: {
+                "tokens": c.tokens,
+                "catalogued": c.catalogued,
+                "excluded_rule": c.excluded_rule,
+                "excluded_hand": c.excluded_hand,
+                "missing": c.missing,
+                "rules": dict(sorted(c.rules.items())),
+                "hand_reasons": dict(sorted(c.reasons.items())),
+            }
+            for key, c in result.chapters.items()
+        },
+        "conflicts": result.conflicts,
+        "tokens": [t.to_json() for t in result.tokens],
+    }
+
+
+def _print_scan(result: ScanResult, book_lines: Sequence[str], list_missing: bool) -> None:
+    print(f"{'chapter':>7}  {'tokens':>6}  {'catalogued':>10}  {'by rule':>7}  "
+          f"{'by hand':>7}  {'missing':>7}")
+    total: Counter[str] = Counter()
+    for key, c in result.chapters.items():
+        print(f"{key:>7}  {c.tokens:>6}  {c.catalogued:>10}  {c.excluded_rule:>7}  "
+              f"{c.excluded_hand:>7}  {c.missing:>7}")
+        total.update(tokens=c.tokens, catalogued=c.catalogued, rule=c.excluded_rule,
+                     hand=c.excluded_hand, missing=c.missing)
+    print("\nexcluded per rule:")
+    for name, n in result.rule_counts().most_common():
+        print(f"  {name:<18} {n:>6}")
+    if list_missing:
+        print("\nmissing tokens:")
+        for t in result.missing:
+            text = book_lines[t.line - 1]
+            print(f"  {t.line:>5}  {t.text:<12} {text[max(0, t.start - 30):t.end + 30].strip()}")
+    for conflict in result.conflicts:
+        print(f"conflict: {conflict}")
+    print(f"\ntotal: {total['tokens']} tokens; {total['catalogued']} catalogued; "
+          f"{total['rule']} excluded by rule, {total['hand']} by hand; "
+          f"{total['missing']} missing")
+
+
+def _scan(args: argparse.Namespace) -> int:
+    book = load_book(book_path(args.book))
+    catalog = checked_catalog(book)
+    result = scan(book, catalog, args.chapters)
+    if args.json:
+        print(json.dumps(_scan_json(result), ensure_ascii=False))
+    else:
+        _print_scan(result, book.lines, args.missing)
+    return EXIT_FINDINGS if result.missing or result.conflicts else EXIT_OK
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run ``bangcheck``; returns the exit status."""
+    parser = _parser()
+    args = parser.parse_args(argv)
+    try:
+        args.chapters = chapter_keys(args.chapter)
+    except ValueError as err:
+        parser.error(str(err))
+    try:
+        return {"claims": _claims, "scan": _scan}[args.command](args)
+    except BookError as err:
+        print(f"bangcheck: error: {err}", file=sys.stderr)
+    except CatalogError as err:
+        print(f"bangcheck: the catalog is invalid ({len(err.problems)} problem(s)):",
+              file=sys.stderr)
+        for problem in err.problems:
+            print(str(problem), file=sys.stderr)
+    except ModelCallError as err:
+        print(f"bangcheck: error: a model could not be evaluated: {err}", file=sys.stderr)
+    return EXIT_USAGE
+
+
+if __name__ == "__main__":
+    sys.exit(main())
