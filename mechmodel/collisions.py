@@ -63,8 +63,8 @@ def collide(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any = 1) -> Collisi
 
     Momentum is conserved and the relative velocity reverses, scaled by the restitution ``e``:
     ``v2' - v1' = e (v1 - v2)``. With ``e = 1`` this is the elastic bang (4.1),
-    ``v' = 2 V_COM - v``; with ``e = 0`` both leave at V_COM (Fig. 2.1). An infinite mass (a wall, the
-    floor, a ceiling) keeps its velocity and the other body rebounds off it:
+    ``v' = 2 V_COM - v``; with ``e = 0`` both leave at V_COM (Fig. 2.1). An infinite mass (a
+    wall, the floor, a ceiling) keeps its velocity and the other body rebounds off it:
     ``v' = u + e (u - v)``. Raises ``ValueError`` for a non-positive or NaN mass, a non-finite
     velocity, ``e`` outside [0, 1], or two infinite masses.
     """

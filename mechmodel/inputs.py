@@ -26,7 +26,7 @@ def is_infinite(x: Any) -> bool:
 
 def real(x: Any, name: str) -> Any:
     """``x`` if it is a finite real number, else ``ValueError`` naming ``name``."""
-    if isinstance(x, bool) or isinstance(x, complex):
+    if isinstance(x, bool | complex):
         raise ValueError(f"{name} must be a real number, got {x!r}")
     try:
         if is_nan(x) or is_infinite(x):
@@ -39,7 +39,7 @@ def real(x: Any, name: str) -> Any:
 
 def mass(m: Any, name: str = "mass", *, infinite_ok: bool = False) -> Any:
     """``m`` if it is a mass in (0, inf) (or inf when ``infinite_ok``), else ``ValueError``."""
-    if isinstance(m, bool) or isinstance(m, complex) or is_nan(m):
+    if isinstance(m, bool | complex) or is_nan(m):
         raise ValueError(f"{name} must be a positive number, got {m!r}")
     if is_infinite(m):
         if m > 0 and infinite_ok:

@@ -6,6 +6,7 @@ independent and elastic (Fig. 8.1(b): finite gaps between the balls).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -44,7 +45,7 @@ def independent_tower(masses: Sequence[Any], v_drop: Any = 1) -> Tower:
     inputs.positive(v_drop, "v_drop")
     rising = collide(math.inf, masses[0], 0, -v_drop).v2
     bangs = []
-    for lower, upper in zip(masses, masses[1:], strict=False):
+    for lower, upper in itertools.pairwise(masses):
         bangs.append(collide(lower, upper, rising, -v_drop))
         rising = bangs[-1].v2
     finals = (*(bang.v1 for bang in bangs), rising)

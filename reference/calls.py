@@ -33,10 +33,13 @@ class ModelCallError(Exception):
 
 
 @dataclass(frozen=True)
-class Rounded:
-    """One rounded input: where it sits in ``args`` and its half-width there."""
+class Input:
+    """A referenced claim's value in ``args``: where it sits, whose it is, and whether it is
+    rounded (then ``half_width`` is its half-width in the units the model receives)."""
 
     path: tuple[str | int, ...]
+    claim_id: str
+    rounded: bool
     half_width: Any
 
 
@@ -71,15 +74,15 @@ def is_rounded(claim: Claim) -> bool:
 
 def build_args(
     raw: dict[str, Any], lookup: Callable[[str], tuple[Claim, Printed]]
-) -> tuple[dict[str, Any], list[Rounded]]:
-    """Concrete keyword arguments for a model, and the rounded inputs among them."""
-    rounded: list[Rounded] = []
+) -> tuple[dict[str, Any], list[Input]]:
+    """Concrete keyword arguments for a model, and the referenced inputs among them."""
+    inputs: list[Input] = []
 
     def convert(value: Any, path: tuple[str | int, ...]) -> Any:
         if isinstance(value, ClaimRef):
             ref, printed = lookup(value.claim)
-            if is_rounded(ref) and printed.half_width:
-                rounded.append(Rounded(path, input_half_width(ref, printed)))
+            rounded = is_rounded(ref) and bool(printed.half_width)
+            inputs.append(Input(path, ref.id, rounded, input_half_width(ref, printed)))
             return input_value(ref, printed)
         if isinstance(value, list):
             return [convert(item, (*path, i)) for i, item in enumerate(value)]
@@ -89,10 +92,11 @@ def build_args(
         return value
 
     args = {name: convert(value, (name,)) for name, value in raw.items()}
-    return args, rounded
+    return args, inputs
 
 
-def _set(args: dict[str, Any], path: tuple[str | int, ...], value: Any) -> dict[str, Any]:
+def replace_input(args: dict[str, Any], path: tuple[str | int, ...], value: Any) -> dict[str, Any]:
+    """A copy of ``args`` with the value at ``path`` replaced."""
     out = {k: list(v) if isinstance(v, list) else v for k, v in args.items()}
     target: Any = out
     for step in path[:-1]:
@@ -102,19 +106,20 @@ def _set(args: dict[str, Any], path: tuple[str | int, ...], value: Any) -> dict[
     return out
 
 
-def _get(args: dict[str, Any], path: tuple[str | int, ...]) -> Any:
+def input_at(args: dict[str, Any], path: tuple[str | int, ...]) -> Any:
+    """The value at ``path`` in ``args``."""
     value: Any = args
     for step in path:
         value = value[step]
     return value
 
 
-def corners(args: dict[str, Any], rounded: list[Rounded]) -> Iterator[dict[str, Any]]:
+def corners(args: dict[str, Any], rounded: list[Input]) -> Iterator[dict[str, Any]]:
     """The model's arguments at every corner of the box of input roundings."""
     for signs in itertools.product((-1, 1), repeat=len(rounded)):
         out = args
         for sign, r in zip(signs, rounded, strict=True):
-            out = _set(out, r.path, _get(out, r.path) + sign * r.half_width)
+            out = replace_input(out, r.path, input_at(out, r.path) + sign * r.half_width)
         yield out
 
 

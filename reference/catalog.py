@@ -110,8 +110,9 @@ def read_file(path: Traversable | Path, problems: list[Problem]) -> ChapterFile 
         return None
     unknown = set(raw) - {"meta", "claim", "excluded", "slip"}
     for table in sorted(unknown):
-        problems.append(Problem(name, "-", table, "unknown table (schema 1 has meta, claim, "
-                                                   "excluded, slip)"))
+        problems.append(
+            Problem(name, "-", table, "unknown table (schema 1 has meta, claim, excluded, slip)")
+        )
     try:
         meta = Meta.model_validate(raw.get("meta"))
     except ValidationError as err:

@@ -14,6 +14,7 @@ from collections.abc import Iterator, Sequence
 from dataclasses import asdict, dataclass, field
 from decimal import Decimal
 from fractions import Fraction
+from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
 from reference.book import Book, book_path, chapter_keys, load_book
@@ -103,14 +104,20 @@ class Evaluation(Sequence[EvaluatedClaim]):
     def __len__(self) -> int:
         return len(self.claims)
 
-    def __getitem__(self, index):  # noqa: ANN001, ANN204 - Sequence protocol
+    def __getitem__(self, index):
         return self.claims[index]
 
     def __iter__(self) -> Iterator[EvaluatedClaim]:
         return iter(self.claims)
 
-    def by_id(self) -> dict[str, EvaluatedClaim]:
+    @cached_property
+    def index(self) -> dict[str, EvaluatedClaim]:
+        """The claims by id."""
         return {c.id: c for c in self.claims}
+
+    def by_id(self) -> dict[str, EvaluatedClaim]:
+        """The claims by id (a shared dict: do not modify)."""
+        return self.index
 
     def verdict_counts(self) -> Counter[str]:
         return Counter(c.verdict for c in self.claims)
@@ -160,7 +167,8 @@ class _Evaluator:
     def call_model(self, claim: Claim) -> tuple[Any, list[Fraction] | None, str | None, Any]:
         """Model value (printed unit), input interval, why there is none, model error."""
         assert claim.model is not None
-        args, rounded = build_args(claim.args, self.lookup)
+        args, inputs = build_args(claim.args, self.lookup)
+        rounded = [i for i in inputs if i.rounded]
         args.update(claim.assumptions)
         factor = unit_factor(claim.unit)
         raw = self.cache.picked(claim.id, claim.model, args, claim.pick)
@@ -177,8 +185,9 @@ class _Evaluator:
                 values = [
                     self._convert(
                         claim,
-                        self._split_error(claim, self.cache.picked(
-                            claim.id, claim.model, corner, claim.pick))[0],
+                        self._split_error(
+                            claim, self.cache.picked(claim.id, claim.model, corner, claim.pick)
+                        )[0],
                         factor,
                     )
                     for corner in corners(args, rounded)
@@ -200,8 +209,10 @@ class _Evaluator:
                 value = complex(value) if isinstance(value, complex) else float(value)
             except (TypeError, ValueError) as err:
                 raise ModelCallError(
-                    claim.id, "pick", f"the model result is a {type(value).__name__}, not a "
-                    "number: pick a part of it"
+                    claim.id,
+                    "pick",
+                    f"the model result is a {type(value).__name__}, not a "
+                    "number: pick a part of it",
                 ) from err
         if isinstance(value, complex) and value.imag == 0:
             value = value.real
@@ -213,32 +224,28 @@ class _Evaluator:
 
     # -- verdicts ------------------------------------------------------------------------
     def judge(
-        self, claim: Claim, printed: Printed, model: Any, interval: list[Fraction] | None,
-        extra: Fraction = Fraction(0),
+        self, claim: Claim, printed: Printed, model: Any, interval: list[Fraction] | None
     ) -> Judgement:
         if isinstance(model, complex):
-            # A complex model value meets a real printed value: its distance in the plane.
-            diff_model = exact(model.real)
-            judgement = self._judge_real(claim, printed, diff_model, interval, extra)
+            # A complex model value meets a real printed value: the real part is compared and
+            # the imaginary part must vanish within the same tolerance.
+            judgement = self._judge_real(claim, printed, exact(model.real), interval)
             if judgement.verdict != "erratum" and abs(exact(model.imag)) > printed.tolerance:
                 return Judgement("erratum", None, judgement.tolerance)
             return judgement
-        return self._judge_real(claim, printed, exact(model), interval, extra)
+        return self._judge_real(claim, printed, exact(model), interval)
 
+    @staticmethod
     def _judge_real(
-        self, claim: Claim, printed: Printed, model: Fraction, interval: list[Fraction] | None,
-        extra: Fraction,
+        claim: Claim, printed: Printed, model: Fraction, interval: list[Fraction] | None
     ) -> Judgement:
         if claim.relation == "=":
             box = (interval[0], interval[1]) if interval else None
-            return judge_equal(
-                printed, model, extra=extra, interval=box, exact_only=claim.kind == "count"
-            )
+            return judge_equal(printed, model, interval=box, exact_only=claim.kind == "count")
         bounds = None
         if claim.bounds is not None:
             bounds = (parse_number(claim.bounds[0]), parse_number(claim.bounds[1]))
-        return judge_relation(claim.relation, printed, model, rel_tol=claim.rel_tol,
-                              bounds=bounds)
+        return judge_relation(claim.relation, printed, model, rel_tol=claim.rel_tol, bounds=bounds)
 
     def evaluate(self, ident: str) -> EvaluatedClaim:
         if ident in self.done:
@@ -251,7 +258,6 @@ class _Evaluator:
         interval_note: str | None = None
         model_error: Any = None
         auto: str | None = None
-        extra = Fraction(0)
         if claim.kind == "given" or (
             claim.restates and self.claims[claim.restates].kind == "given"
         ):
@@ -261,7 +267,7 @@ class _Evaluator:
         ):
             key = claim.constant or self.claims[claim.restates or ""].constant
             assert key is not None
-            judgement, model_value, extra, auto = self.judge_constant(claim, printed, key)
+            judgement, model_value, auto = self.judge_constant(claim, printed, key)
         elif claim.restates:
             source = self.evaluate(claim.restates)
             model_value = self.model_values[claim.restates][0]
@@ -289,7 +295,7 @@ class _Evaluator:
 
     def judge_constant(
         self, claim: Claim, printed: Printed, key: str
-    ) -> tuple[Judgement, float, Fraction, str | None]:
+    ) -> tuple[Judgement, float, str | None]:
         const = constants()[key]
         factor = unit_factor(claim.unit)
         editions = const.editions
@@ -307,12 +313,19 @@ class _Evaluator:
                 ):
                     auto = f"dated: matches {old.edition} ({old.value:g} {const.unit})"
                     break
-        return judgement, value, extra, auto
+        return judgement, value, auto
 
     def record(
-        self, f: ChapterFile, claim: Claim, printed: Printed, judgement: Judgement,
-        model_value: Any, interval: list[Fraction] | None, interval_note: str | None,
-        model_error: Any, auto: str | None,
+        self,
+        f: ChapterFile,
+        claim: Claim,
+        printed: Printed,
+        judgement: Judgement,
+        model_value: Any,
+        interval: list[Fraction] | None,
+        interval_note: str | None,
+        model_error: Any,
+        auto: str | None,
     ) -> EvaluatedClaim:
         correct_agrees = None
         if claim.correct is not None and model_value is not None:
@@ -332,9 +345,7 @@ class _Evaluator:
                 "auto": auto,
             }
         tol = judgement.tolerance
-        wide = bool(
-            interval and tol and (interval[1] - interval[0]) > WIDE_INTERVAL * 2 * tol
-        )
+        wide = bool(interval and tol and (interval[1] - interval[0]) > WIDE_INTERVAL * 2 * tol)
         return EvaluatedClaim(
             id=claim.id,
             chapter=f.meta.chapter,
@@ -383,9 +394,7 @@ def evaluate_catalog(
     """Evaluate the claims of ``chapters`` (default: all) of a validated ``catalog``."""
     evaluator = _Evaluator(catalog, book)
     wanted = set(chapters) if chapters is not None else None
-    selected = [
-        c.id for f, c in catalog.claims() if wanted is None or f.meta.chapter in wanted
-    ]
+    selected = [c.id for f, c in catalog.claims() if wanted is None or f.meta.chapter in wanted]
     out = []
     for i, ident in enumerate(selected, start=1):
         out.append(evaluator.evaluate(ident))

@@ -36,7 +36,9 @@ class Rule:
     guarded: bool  # True: may not exclude decimals, numbers with units, or numbers after "="
 
 
-def _regex_rule(pattern: re.Pattern[str], group: int = 0) -> Callable[[Sequence[str], int], list[Span]]:
+def _regex_rule(
+    pattern: re.Pattern[str], group: int = 0
+) -> Callable[[Sequence[str], int], list[Span]]:
     def spans(lines: Sequence[str], number: int) -> list[Span]:
         return [m.span(group) for m in pattern.finditer(lines[number - 1])]
 
@@ -92,29 +94,72 @@ def _notation(lines: Sequence[str], number: int) -> list[Span]:
 
 
 RULES: tuple[Rule, ...] = (
-    Rule("equation-tag", "an equation number in parentheses, (3.8), (5.13a), (1.A.7), not "
-         "glued to a word or number before it", _regex_rule(_EQUATION_TAG), False),
-    Rule("ref-figure", "a figure reference: Fig. 8.1(b), Figs. 4.6-4.8, Fig. 1.1-2, Figure 3",
-         _regex_rule(_FIGURE), False),
+    Rule(
+        "page-footer",
+        "the page footer '©2012 W. G. Harter ...' and a page number alone on "
+        "a line up to three lines after it",
+        _footer,
+        False,
+    ),
+    Rule(
+        "equation-tag",
+        "an equation number in parentheses, (3.8), (5.13a), (1.A.7), not "
+        "glued to a word or number before it",
+        _regex_rule(_EQUATION_TAG),
+        False,
+    ),
+    Rule(
+        "ref-figure",
+        "a figure reference: Fig. 8.1(b), Figs. 4.6-4.8, Fig. 1.1-2, Figure 3",
+        _regex_rule(_FIGURE),
+        False,
+    ),
     Rule("ref-table", "a table reference: Table 1.1", _regex_rule(_TABLE), False),
-    Rule("ref-chapter", "a chapter reference or heading: Chapter 8, Ch. 1-5, Chapter6.",
-         _regex_rule(_CHAPTER), False),
-    Rule("ref-section", "a section reference: Section 4, Sec. 3.2", _regex_rule(_SECTION),
-         False),
-    Rule("ref-unit", "a reference to a Unit of the book: Unit 1, Units 1-8",
-         _regex_rule(_UNIT), False),
-    Rule("exercise-number", "an exercise or problem number: Exercise 1.8.2, Problem 12.3",
-         _regex_rule(_EXERCISE), False),
-    Rule("page-footer", "the page footer '©2012 W. G. Harter ...' and a page number alone on "
-         "a line up to three lines after it", _footer, False),
-    Rule("citation", "a citation: journal volume, page (year) as in 39, 656 (1971); a "
-         "scripture chapter:verse as in Joshua 10:10-15", _regex_rule(_CITATION), False),
-    Rule("list-number", "the number of a numbered list item at the start of a line: "
-         "'1. Construct', '2) Find'", _regex_rule(_LIST_NUMBER, 1), True),
-    Rule("symbol-index", "one digit glued to a one-letter symbol, an index or flattened "
-         "exponent: m1, V2, σ1, x2", _symbol_index, True),
-    Rule("formula-notation", "notation, not a quantity: the -1 of an inverse function "
-         "(tan-1, cos-1) and dimension labels (1D, 2D, 3D)", _notation, True),
+    Rule(
+        "ref-chapter",
+        "a chapter reference or heading: Chapter 8, Ch. 1-5, Chapter6.",
+        _regex_rule(_CHAPTER),
+        False,
+    ),
+    Rule("ref-section", "a section reference: Section 4, Sec. 3.2", _regex_rule(_SECTION), False),
+    Rule(
+        "ref-unit",
+        "a reference to a Unit of the book: Unit 1, Units 1-8",
+        _regex_rule(_UNIT),
+        False,
+    ),
+    Rule(
+        "exercise-number",
+        "an exercise or problem number: Exercise 1.8.2, Problem 12.3",
+        _regex_rule(_EXERCISE),
+        False,
+    ),
+    Rule(
+        "citation",
+        "a citation: journal volume, page (year) as in 39, 656 (1971); a "
+        "scripture chapter:verse as in Joshua 10:10-15",
+        _regex_rule(_CITATION),
+        False,
+    ),
+    Rule(
+        "list-number",
+        "the number of a numbered list item at the start of a line: '1. Construct', '2) Find'",
+        _regex_rule(_LIST_NUMBER, 1),
+        True,
+    ),
+    Rule(
+        "symbol-index",
+        "one digit glued to a one-letter symbol, an index or flattened exponent: m1, V2, σ1, x2",
+        _symbol_index,
+        True,
+    ),
+    Rule(
+        "formula-notation",
+        "notation, not a quantity: the -1 of an inverse function "
+        "(tan-1, cos-1) and dimension labels (1D, 2D, 3D)",
+        _notation,
+        True,
+    ),
 )
 
 RULES_BY_NAME = {rule.name: rule for rule in RULES}

@@ -62,9 +62,7 @@ def follow(result: Any, path: str) -> Any:
     value = result
     for step in pick_steps(path):
         try:
-            if isinstance(step, int):
-                value = value[step]
-            elif isinstance(value, dict):
+            if isinstance(step, int) or isinstance(value, dict):
                 value = value[step]
             else:
                 value = getattr(value, step)

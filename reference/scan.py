@@ -169,20 +169,23 @@ def _classify(
     where = f"line {tok.line} token {tok.text!r}"
     if key in claimed:
         if rule:
-            result.conflicts.append(f"{where}: catalogued ({claimed[key]}) but rule {rule} "
-                                    "excludes it")
+            result.conflicts.append(
+                f"{where}: catalogued ({claimed[key]}) but rule {rule} excludes it"
+            )
         if hand:
             result.conflicts.append(f"{where}: catalogued ({claimed[key]}) and excluded by hand")
-        return ScannedToken(chapter, tok.line, tok.start, tok.end, tok.text, "catalogued",
-                            claimed[key])
+        return ScannedToken(
+            chapter, tok.line, tok.start, tok.end, tok.text, "catalogued", claimed[key]
+        )
     if rule:
         if hand:
             result.conflicts.append(f"{where}: excluded by hand, but rule {rule} already does")
         return ScannedToken(chapter, tok.line, tok.start, tok.end, tok.text, "excluded", rule)
     reason = hand or hand_lines.get(tok.line)
     if reason:
-        return ScannedToken(chapter, tok.line, tok.start, tok.end, tok.text, "excluded", reason,
-                            hand=True)
+        return ScannedToken(
+            chapter, tok.line, tok.start, tok.end, tok.text, "excluded", reason, hand=True
+        )
     return ScannedToken(chapter, tok.line, tok.start, tok.end, tok.text, "missing", None)
 
 

@@ -74,7 +74,8 @@ class ClaimRef(_Strict):
 
 
 ArgValue = TypeAliasType(
-    "ArgValue", "int | float | str | ClaimRef | list[ArgValue]"  # type: ignore[misc]
+    "ArgValue",
+    "int | float | str | ClaimRef | list[ArgValue]",  # type: ignore[misc]
 )
 
 

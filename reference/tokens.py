@@ -2,23 +2,24 @@
 
 The rules (each is a test in ``checks/test_tokens.py`` on a real line of the book):
 
-- **sign**: ``-``, Unicode minus ``−``, en dash ``–`` or ``+`` directly before a digit is part of the
-  token when it stands at the start of the line or after a space, ``(``, ``[``, ``{``, ``=``, ``,`` or
-  ``;``; inside a word ("Bang-11", "tan-1", "ms-2") it is not. ``±`` is always a sign.
-- **thousands**: groups of three digits after commas ("7,250"); a chain of three or more groups may
-  hold one four-digit group, a doubled glyph of the extraction ("60,200,000,000,0000,000,000,000").
-  "(60,10)" is two tokens.
-- **decimal**: digits, a point, digits ("0.0100"); a point and digits after a non-digit (".5mile").
-- **E-notation**: a mantissa then ``E`` and an exponent, with or without one space ("6.282 E6",
-  "1.67E-27"); not for an integer glued to a letter ("E1E2" is two basis vectors).
-- **power of ten**: a mantissa, a multiplication dot and ``10`` with a signed exponent, as one token
-  ("2·10-27", "(2/3)·10-27", "9·10+9"); a bare "10-25" (10 with a minus and one or two digits, not after
-  a digit, point or colon) is one token too. The catalog still says what a power means.
+- **sign**: ``-``, Unicode minus ``−``, en dash ``–`` or ``+`` directly before a digit belongs to
+  the token when it stands at the start of the line or after a space, ``(``, ``[``, ``{``, ``=``,
+  ``,`` or ``;``; inside a word ("Bang-11", "tan-1", "ms-2") it does not. ``±`` always does.
+- **thousands**: groups of three digits after commas ("7,250"); a chain of three or more groups
+  may hold one four-digit group, a doubled glyph of the extraction
+  ("60,200,000,000,0000,000,000,000"). "(60,10)" is two tokens.
+- **decimal**: digits, a point, digits ("0.0100"); a point and digits at the start of a line or
+  after a space, a sign, ``(`` or ``=`` (".5mile", "-.5"; not "Ch.4").
+- **E-notation**: a mantissa, ``E`` and an exponent, with or without one space ("6.282 E6",
+  "1.67E-27"); not after an integer glued to a letter ("E1E2" is two basis vectors).
+- **power of ten**: a mantissa, a multiplication dot and ``10`` with a signed exponent are one
+  token ("2·10-27", "(2/3)·10-27", "9·10+9"); so is a bare "10-25" (10, a minus and one or two
+  digits, not after a digit, point or colon). The catalog still says what a power means.
 - **percent and degree** marks belong to their number ("64.2%", "45°").
-- **fraction** "p/q" of two integers ("30/10", "1/720"), unless the numerator is glued to a letter
-  ("x2/2" is a symbol with an exponent, then a 2).
-- **pi and roots**: "π/2", "2π/3", "5π", "180/π", "√3/2", "√8", "2√2", "1/√2" are one token each. A bare
-  π with no digit is not a number token.
+- **fraction** "p/q" of two integers ("30/10", "1/720"), unless the numerator is glued to a
+  letter ("x2/2" is a symbol with an exponent, then a 2).
+- **pi and roots**: "π/2", "2π/3", "5π", "180/π", "√3/2", "√8", "2√2", "1/√2" are one token each.
+  A bare π with no digit is not a number token.
 - **range**: "1285-1349" is two tokens (a hyphen after a digit is never a sign).
 """
 
@@ -29,6 +30,7 @@ from dataclasses import dataclass
 
 MINUS_SIGNS = "-−–"
 _SIGN_CONTEXT = " \t([{=,;"
+_POINT_CONTEXT = " \t([{=~"
 _DOT = "·⋅"
 
 # Alternatives tried at a token's first digit (or π, √, "("), longest forms first.
@@ -116,29 +118,31 @@ def _body_end(line: str, pos: int) -> int | None:
     return mark.end() if mark else end
 
 
+def _starts_number(text: str, pos: int) -> bool:
+    nxt = text[pos + 1 : pos + 2]
+    return bool(nxt) and (nxt.isdigit() or nxt in ".π√")
+
+
 def tokenize_line(text: str, line: int = 0) -> list[Token]:
     """Every number token of one line of the book, left to right."""
     tokens: list[Token] = []
     pos = 0
-    n = len(text)
-    while pos < n:
+    while pos < len(text):
         start = pos
-        if _sign_at(text, pos) and pos + 1 < n and (text[pos + 1].isdigit() or text[pos + 1] in ".π√"):
+        if _sign_at(text, pos) and _starts_number(text, pos):
             pos += 1
-        if text[pos] == "." and pos + 1 < n and text[pos + 1].isdigit():
-            if pos == 0 or not text[pos - 1].isdigit():
+        end: int | None = None
+        if text[pos] == "." and pos + 1 < len(text) and text[pos + 1].isdigit():
+            if pos == 0 or text[pos - 1] in _POINT_CONTEXT + MINUS_SIGNS + "+±":
                 m = _POINT_DECIMAL.match(text, pos)
-                assert m is not None
-                tokens.append(Token(line, start, m.end(), text[start : m.end()]))
-                pos = m.end()
-                continue
-        if text[pos].isdigit() or text[pos] in "π√(":
+                end = m.end() if m else None
+        elif text[pos].isdigit() or text[pos] in "π√(":
             end = _body_end(text, pos)
-            if end is not None:
-                tokens.append(Token(line, start, end, text[start:end]))
-                pos = end
-                continue
-        pos = start + 1
+        if end is None:
+            pos = start + 1
+            continue
+        tokens.append(Token(line, start, end, text[start:end]))
+        pos = end
     return tokens
 
 

@@ -11,6 +11,8 @@ import re
 from collections.abc import Iterator
 from fractions import Fraction
 from functools import cache
+from importlib.resources.abc import Traversable
+from pathlib import Path
 
 from reference.book import Book, identity
 from reference.catalog import Catalog, ChapterFile, read_catalog
@@ -72,9 +74,9 @@ def superscript_ok(printed: str, means: str) -> bool:
             mantissa = parse_number(head).value
     for i in range(1, len(s)):
         base, exp = s[:i], s[i:]
-        if re.fullmatch(r"\d+(?:\.\d+)?", base) and re.fullmatch(r"-?\d+", exp):
-            if sign * mantissa * Fraction(base) ** int(exp) == target:
-                return True
+        readable = re.fullmatch(r"\d+(?:\.\d+)?", base) and re.fullmatch(r"-?\d+", exp)
+        if readable and sign * mantissa * Fraction(base) ** int(exp) == target:
+            return True
     return False
 
 
@@ -97,11 +99,16 @@ class _Checker:
             self.add(f, "meta", "-", f"no chapter has file name {f.stem}.toml")
             return
         if f.meta.chapter != chapter.key:
-            self.add(f, "meta", "chapter", f"is {f.meta.chapter!r}, the file is chapter "
-                                           f"{chapter.key!r}")
+            self.add(
+                f, "meta", "chapter", f"is {f.meta.chapter!r}, the file is chapter {chapter.key!r}"
+            )
         if f.meta.lines != [chapter.start, chapter.end]:
-            self.add(f, "meta", "lines", f"is {f.meta.lines}, the chapter is "
-                                         f"[{chapter.start}, {chapter.end}] (book.toml)")
+            self.add(
+                f,
+                "meta",
+                "lines",
+                f"is {f.meta.lines}, the chapter is [{chapter.start}, {chapter.end}] (book.toml)",
+            )
 
     # -- claims ------------------------------------------------------------------------
     def check_claim(self, f: ChapterFile, c: Claim) -> None:
@@ -141,8 +148,10 @@ class _Checker:
                 add("means", str(err))
             else:
                 if c.garble == "superscript" and not superscript_ok(c.printed, c.means):
-                    add("means", f"no split of {c.printed!r} into base and exponent gives "
-                                 f"{c.means!r}")
+                    add(
+                        "means",
+                        f"no split of {c.printed!r} into base and exponent gives {c.means!r}",
+                    )
         if c.sigfigs is not None:
             if c.precision_reason is None:
                 add("precision_reason", "reduced 'sigfigs' needs a precision_reason")
@@ -156,16 +165,16 @@ class _Checker:
             add("unit", f"unknown unit {c.unit!r} (see reference/units.toml)")
         mark = c.printed.strip()[-1:]
         if mark == "%" and c.unit != "percent":
-            add("unit", "a printed percent needs unit = \"percent\"")
+            add("unit", 'a printed percent needs unit = "percent"')
         if mark == "°" and c.unit != "deg":
-            add("unit", "a printed degree mark needs unit = \"deg\"")
+            add("unit", 'a printed degree mark needs unit = "deg"')
         if c.assumptions and c.precision_reason is None:
             add("precision_reason", "assumptions need a precision_reason")
 
     def check_kind(self, f: ChapterFile, c: Claim) -> None:
         add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
         if (c.kind == "given") != (c.expect == "given"):
-            add("expect", "a given (and only a given) expects \"given\"")
+            add("expect", 'a given (and only a given) expects "given"')
         if c.kind in ("given", "constant") and (c.model or c.args or c.pick):
             add("model", f"a {c.kind} claim has no model, args or pick")
         if c.rounded and c.kind != "given":
@@ -205,8 +214,12 @@ class _Checker:
             significant_digits(c.means or c.printed)
         )
         if not stated.exact and not (same_decimals or same_figures):
-            self.add(f, c.id, "correct", "write it to the printed number of decimals or of "
-                                         "significant figures")
+            self.add(
+                f,
+                c.id,
+                "correct",
+                "write it to the printed number of decimals or of significant figures",
+            )
 
     def check_model(self, f: ChapterFile, c: Claim) -> None:
         add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
@@ -308,7 +321,7 @@ class _Checker:
             if match is None:
                 add("token", f"{e.token!r} {why}")
 
-    def check_slip(self, f: ChapterFile, s) -> None:  # noqa: ANN001 - a schema.Slip
+    def check_slip(self, f: ChapterFile, s) -> None:
         lo, hi = f.meta.lines
         if not s.id.startswith(f.stem + "."):
             self.add(f, s.id, "id", f"must start with {f.stem}.")
@@ -384,7 +397,7 @@ def validate(catalog: Catalog, book: Book | None) -> list[Problem]:
     return _Checker(catalog, book).run()
 
 
-def checked_catalog(book: Book | None, directory=None) -> Catalog:  # noqa: ANN001
+def checked_catalog(book: Book | None, directory: Traversable | Path | None = None) -> Catalog:
     """Read and validate the catalog; ``CatalogError`` with one line per problem."""
     catalog = read_catalog(directory)
     problems = validate(catalog, book)

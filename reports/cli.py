@@ -11,6 +11,7 @@ import json
 import sys
 from collections import Counter
 from collections.abc import Sequence
+from pathlib import Path
 from typing import Any
 
 from reference.book import BookError, book_path, chapter_keys, load_book
@@ -33,6 +34,12 @@ def _parser() -> argparse.ArgumentParser:
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument("--book", help="path of bang-unit1.txt (default: $BANGCHECK_BOOK)")
     common.add_argument("--chapter", help='chapters: "8", "0-3", "4,5", "A1" (default: all)')
+    common.add_argument(
+        "--catalog",
+        type=Path,
+        help="a catalog directory of chNN.toml files to use instead of "
+        "the packaged one (for drafting)",
+    )
 
     claims = sub.add_parser("claims", parents=[common], help="the evaluated catalog")
     claims.add_argument("--json", action="store_true", help="one JSON object per claim")
@@ -54,11 +61,7 @@ def _fmt(value: Any) -> str:
 
 
 def _failing(evaluation: Evaluation, strict: bool) -> list[str]:
-    return [
-        c.id
-        for c in evaluation
-        if not c.passed and (c.verdict != "unmodeled" or strict)
-    ]
+    return [c.id for c in evaluation if not c.passed and (c.verdict != "unmodeled" or strict)]
 
 
 def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) -> None:
@@ -80,7 +83,7 @@ def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) ->
 
 def _claims(args: argparse.Namespace) -> int:
     book = load_book(book_path(args.book))
-    catalog = checked_catalog(book)
+    catalog = checked_catalog(book, args.catalog)
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
     _print_claims(evaluation, args.json, args.verdict)
     counts = evaluation.verdict_counts()
@@ -88,8 +91,10 @@ def _claims(args: argparse.Namespace) -> int:
     print(f"bangcheck: {len(evaluation)} claims: {summary or 'none'}", file=sys.stderr)
     failing = _failing(evaluation, args.strict)
     if failing:
-        print(f"bangcheck: {len(failing)} claim(s) differ from expect: "
-              f"{', '.join(failing[:10])}", file=sys.stderr)
+        print(
+            f"bangcheck: {len(failing)} claim(s) differ from expect: {', '.join(failing[:10])}",
+            file=sys.stderr,
+        )
         return EXIT_FINDINGS
     return EXIT_OK
 
@@ -114,14 +119,23 @@ def _scan_json(result: ScanResult) -> dict[str, Any]:
 
 
 def _print_scan(result: ScanResult, book_lines: Sequence[str], list_missing: bool) -> None:
-    print(f"{'chapter':>7}  {'tokens':>6}  {'catalogued':>10}  {'by rule':>7}  "
-          f"{'by hand':>7}  {'missing':>7}")
+    print(
+        f"{'chapter':>7}  {'tokens':>6}  {'catalogued':>10}  {'by rule':>7}  "
+        f"{'by hand':>7}  {'missing':>7}"
+    )
     total: Counter[str] = Counter()
     for key, c in result.chapters.items():
-        print(f"{key:>7}  {c.tokens:>6}  {c.catalogued:>10}  {c.excluded_rule:>7}  "
-              f"{c.excluded_hand:>7}  {c.missing:>7}")
-        total.update(tokens=c.tokens, catalogued=c.catalogued, rule=c.excluded_rule,
-                     hand=c.excluded_hand, missing=c.missing)
+        print(
+            f"{key:>7}  {c.tokens:>6}  {c.catalogued:>10}  {c.excluded_rule:>7}  "
+            f"{c.excluded_hand:>7}  {c.missing:>7}"
+        )
+        total.update(
+            tokens=c.tokens,
+            catalogued=c.catalogued,
+            rule=c.excluded_rule,
+            hand=c.excluded_hand,
+            missing=c.missing,
+        )
     print("\nexcluded per rule:")
     for name, n in result.rule_counts().most_common():
         print(f"  {name:<18} {n:>6}")
@@ -129,17 +143,19 @@ def _print_scan(result: ScanResult, book_lines: Sequence[str], list_missing: boo
         print("\nmissing tokens:")
         for t in result.missing:
             text = book_lines[t.line - 1]
-            print(f"  {t.line:>5}  {t.text:<12} {text[max(0, t.start - 30):t.end + 30].strip()}")
+            print(f"  {t.line:>5}  {t.text:<12} {text[max(0, t.start - 30) : t.end + 30].strip()}")
     for conflict in result.conflicts:
         print(f"conflict: {conflict}")
-    print(f"\ntotal: {total['tokens']} tokens; {total['catalogued']} catalogued; "
-          f"{total['rule']} excluded by rule, {total['hand']} by hand; "
-          f"{total['missing']} missing")
+    print(
+        f"\ntotal: {total['tokens']} tokens; {total['catalogued']} catalogued; "
+        f"{total['rule']} excluded by rule, {total['hand']} by hand; "
+        f"{total['missing']} missing"
+    )
 
 
 def _scan(args: argparse.Namespace) -> int:
     book = load_book(book_path(args.book))
-    catalog = checked_catalog(book)
+    catalog = checked_catalog(book, args.catalog)
     result = scan(book, catalog, args.chapters)
     if args.json:
         print(json.dumps(_scan_json(result), ensure_ascii=False))
@@ -156,13 +172,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         args.chapters = chapter_keys(args.chapter)
     except ValueError as err:
         parser.error(str(err))
+    if args.catalog is not None and not args.catalog.is_dir():
+        parser.error(f"--catalog {args.catalog}: not a directory")
     try:
         return {"claims": _claims, "scan": _scan}[args.command](args)
     except BookError as err:
         print(f"bangcheck: error: {err}", file=sys.stderr)
     except CatalogError as err:
-        print(f"bangcheck: the catalog is invalid ({len(err.problems)} problem(s)):",
-              file=sys.stderr)
+        print(
+            f"bangcheck: the catalog is invalid ({len(err.problems)} problem(s)):", file=sys.stderr
+        )
         for problem in err.problems:
             print(str(problem), file=sys.stderr)
     except ModelCallError as err:

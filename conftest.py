@@ -1,0 +1,131 @@
+"""pytest driver for bangcheck: the book option, hypothesis profiles, the catalog at collection,
+and the verdict summary.
+
+- ``--book PATH`` (else ``$BANGCHECK_BOOK``). Without a book, tests that read it skip with the
+  reason; under ``CI=true`` or when a path is given, a missing or wrong book is an error.
+- The catalog is read and validated once, at collection; an invalid catalog stops the run with
+  one line per problem (file, claim id, field).
+- Hypothesis profiles ``ci`` (the default when ``CI=true``), ``dev`` (the default otherwise) and
+  ``thorough``; choose with ``--hypothesis-profile``.
+- The terminal summary ends with the verdict counts, just before pytest's final line.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Generator
+from typing import Any
+
+import pytest
+from hypothesis import settings
+
+from reference.book import Book, BookError, book_path, load_book
+from reference.catalog import Catalog, read_catalog
+from reference.compare import VERDICTS
+from reference.evaluate import Evaluation, evaluate_catalog
+from reference.schema import CatalogError
+from reference.validate import validate
+
+IN_CI = os.environ.get("CI", "").lower() == "true"
+MIN_EXAMPLES = 50  # the ci profile's floor: speed never hollows a property out
+
+settings.register_profile("ci", derandomize=True, deadline=None, max_examples=MIN_EXAMPLES * 2)
+settings.register_profile("dev", deadline=None, max_examples=MIN_EXAMPLES)
+settings.register_profile("thorough", deadline=None, max_examples=MIN_EXAMPLES * 20)
+settings.load_profile("ci" if IN_CI else "dev")
+
+_BOOK = pytest.StashKey[Book | None]()
+_NO_BOOK = pytest.StashKey[str]()
+_CATALOG = pytest.StashKey[Catalog]()
+_EVALUATION = pytest.StashKey[Evaluation]()
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption(
+        "--book", action="store", default=None, help="path of bang-unit1.txt ($BANGCHECK_BOOK)"
+    )
+
+
+def _load_book(config: pytest.Config) -> Book | None:
+    given = config.getoption("--book") or os.environ.get("BANGCHECK_BOOK")
+    if not given:
+        reason = "no book given: pass --book PATH or set BANGCHECK_BOOK"
+        if IN_CI:
+            raise pytest.UsageError(f"CI=true but {reason}")
+        config.stash[_NO_BOOK] = reason
+        return None
+    try:
+        return load_book(book_path(given))
+    except BookError as err:
+        raise pytest.UsageError(str(err)) from err
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    book = _load_book(config)
+    config.stash[_BOOK] = book
+    try:
+        catalog = read_catalog()
+    except CatalogError as err:
+        raise pytest.UsageError(f"the catalog is invalid:\n{err}") from err
+    problems = validate(catalog, book)
+    if problems:
+        raise pytest.UsageError("the catalog is invalid:\n" + "\n".join(map(str, problems)))
+    config.stash[_CATALOG] = catalog
+
+
+def catalog_of(config: pytest.Config) -> Catalog:
+    """The validated catalog (read at configure time)."""
+    return config.stash[_CATALOG]
+
+
+def evaluation_of(config: pytest.Config) -> Evaluation | None:
+    """The run's evaluation, computed once per process; None without a book."""
+    book = config.stash.get(_BOOK, None)
+    if book is None:
+        return None
+    if _EVALUATION not in config.stash:
+        config.stash[_EVALUATION] = evaluate_catalog(catalog_of(config), book)
+    return config.stash[_EVALUATION]
+
+
+@pytest.fixture(scope="session")
+def book(pytestconfig: pytest.Config) -> Book:
+    """The verified book; skips (outside CI) when no book was given."""
+    the_book = pytestconfig.stash.get(_BOOK, None)
+    if the_book is None:
+        pytest.skip(pytestconfig.stash.get(_NO_BOOK, "no book"))
+    return the_book
+
+
+@pytest.fixture(scope="session")
+def catalog(pytestconfig: pytest.Config) -> Catalog:
+    """The packaged catalog, validated against the book when there is one."""
+    return catalog_of(pytestconfig)
+
+
+@pytest.fixture(scope="session")
+def evaluation(pytestconfig: pytest.Config, book: Book) -> Evaluation:
+    """Every claim evaluated once for the session."""
+    result = evaluation_of(pytestconfig)
+    assert result is not None
+    return result
+
+
+@pytest.hookimpl(wrapper=True, tryfirst=True)
+def pytest_terminal_summary(
+    terminalreporter: Any, exitstatus: int, config: pytest.Config
+) -> Generator[None]:
+    result = yield
+    evaluation = evaluation_of(config)
+    if evaluation is not None:
+        counts = evaluation.verdict_counts()
+        shown = ", ".join(f"{v} {counts[v]}" for v in VERDICTS if counts[v])
+        terminalreporter.write_line(f"bangcheck verdicts: {len(evaluation)} claims: {shown}")
+    return result
+
+
+def pytest_generate_tests(metafunc: pytest.Metafunc) -> None:
+    """One test per catalogued claim, its id the claim id."""
+    if "claim_id" in metafunc.fixturenames:
+        ids = [claim.id for _, claim in catalog_of(metafunc.config).claims()]
+        metafunc.parametrize("claim_id", ids, ids=ids)
