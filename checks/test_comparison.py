@@ -1,0 +1,225 @@
+"""Printed values, verdicts, relations, intervals and the automatic diagnosis (design section 3)."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+
+from reference.compare import exact, in_order_of, judge_equal, judge_relation
+from reference.diagnose import diagnose
+from reference.numbers import NumberFormatError, parse_number
+
+
+def verdict(printed: str, model: float, **kw: object) -> tuple[str, str | None]:
+    j = judge_equal(parse_number(printed), exact(model), **kw)  # type: ignore[arg-type]
+    return j.verdict, j.reason
+
+
+# -- printed values: value and half-width from the digits ---------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("printed", "value", "half"),
+    [
+        ("7,250", Fraction(7250), Fraction(1, 2)),
+        ("60", Fraction(60), Fraction(1, 2)),
+        ("0.0100", Fraction(1, 100), Fraction(5, 100000)),
+        ("−7.071", Fraction(-7071, 1000), Fraction(5, 10000)),
+        ("6.4E6", Fraction(6400000), Fraction(50000)),
+        ("6.282 E6", Fraction(6282000), Fraction(500)),
+        ("1.67·10-27", Fraction(167, 10**29), Fraction(5, 10**30)),
+        ("2·10-27", Fraction(2, 10**27), Fraction(5, 10**28)),
+        ("9·10+9", Fraction(9 * 10**9), Fraction(5 * 10**8)),
+        ("64.2%", Fraction(642, 10), Fraction(5, 100)),
+        ("45°", Fraction(45), Fraction(1, 2)),
+        (".5", Fraction(1, 2), Fraction(5, 100)),
+        ("1.5^2", Fraction(9, 4), 2 * Fraction(3, 2) * Fraction(5, 100)),  # d(b^2) = 2 b db
+    ],
+)
+def test_printed_precision_comes_from_its_digits(
+    printed: str, value: Fraction, half: Fraction
+) -> None:
+    p = parse_number(printed)
+    assert (p.value, p.half_width, p.exact) == (value, half, False)
+
+
+@pytest.mark.parametrize(
+    ("printed", "value"),
+    [
+        ("30/10", Fraction(3)),
+        ("1/720", Fraction(1, 720)),
+        ("(2/3)·10-27", Fraction(2, 3 * 10**27)),
+        ("10-25", Fraction(1, 10**25)),
+        ("60^2", Fraction(3600)),
+        ("10^-25", Fraction(1, 10**25)),
+    ],
+)
+def test_exact_forms(printed: str, value: Fraction) -> None:
+    p = parse_number(printed)
+    assert (p.value, p.exact, p.half_width) == (value, True, 0)
+
+
+@pytest.mark.parametrize(
+    ("printed", "value"),
+    [
+        ("π/3", math.pi / 3),
+        ("2π/3", 2 * math.pi / 3),
+        ("5π", 5 * math.pi),
+        ("180/π", 180 / math.pi),
+        ("√3/2", math.sqrt(3) / 2),
+        ("√8", math.sqrt(8)),
+        ("1/√2", 1 / math.sqrt(2)),
+        ("2√2", 2 * math.sqrt(2)),
+    ],
+)
+def test_pi_and_root_forms_are_exact(printed: str, value: float) -> None:
+    p = parse_number(printed)
+    assert p.exact
+    assert p.irrational
+    assert verdict(printed, value) == ("verified", None)
+    assert verdict(printed, value * (1 + 1e-9)) == ("erratum", None)
+
+
+def test_sigfigs_widen_the_half_width() -> None:
+    p = parse_number("9,000,000,000", sigfigs=1)
+    assert p.half_width == 5 * 10**8
+    assert judge_equal(p, exact(8.98755e9)).verdict == "verified"
+    assert judge_equal(parse_number("9,000,000,000"), exact(8.98755e9)).verdict == "erratum"
+
+
+@pytest.mark.parametrize("bad", ["", "-", "abc", "1/0", "3..2", "E6"])
+def test_unreadable_numbers_raise(bad: str) -> None:
+    with pytest.raises(NumberFormatError):
+        parse_number(bad)
+
+
+# -- verdicts of "=" ----------------------------------------------------------------------------
+
+
+def test_tie_at_half_a_unit_is_inside() -> None:
+    assert verdict("0.13", 0.125) == ("verified", None)
+    assert verdict("0.12", 0.125) == ("verified", None)
+
+
+def test_float_just_below_a_half_still_rounds() -> None:
+    assert verdict("5.8", 5.749999999999999) == ("verified", None)
+
+
+def test_trailing_zeros_count() -> None:
+    assert verdict("0.0100", 0.01002936) == ("verified", None)
+    assert verdict("0.0100", 0.01009) == ("rounding", "truncation")
+    assert verdict("0.0100", 0.00991) == ("rounding", "other-way")
+    assert verdict("0.010", 0.01009) == ("verified", None)
+
+
+def test_truncation_and_other_way_rounding() -> None:
+    assert verdict("2.71805", 1 + 1 + 1 / 2 + 1 / 6 + 1 / 24 + 1 / 120 + 1 / 720) == (
+        "rounding",
+        "truncation",
+    )
+    assert verdict("2.71806", 2.7180544) == ("rounding", "other-way")
+    assert verdict("2.71807", 2.7180544) == ("erratum", None)
+
+
+def test_printed_fraction_is_exact() -> None:
+    assert verdict("30/10", 3.0) == ("verified", None)
+    assert verdict("1/720", 1 / 720) == ("verified", None)
+    assert verdict("30/10", 3.0000001) == ("erratum", None)
+    assert verdict("30/10", 3.01) == ("erratum", None)  # no rounding level for exact forms
+
+
+def test_plus_minus_compares_the_magnitude() -> None:
+    assert verdict("±π/3", -math.pi / 3) == ("verified", None)
+    assert verdict("±180°", 180.0) == ("verified", None)
+    assert verdict("±180°", -178.9) == ("erratum", None)
+
+
+def test_input_interval_gives_rounding() -> None:
+    # 3.62 from the rounded 2.1 (30/10 tower stage): the model at 2.1 gives 3.65
+    box = (exact(3.575), exact(3.725))
+    assert verdict("3.62", 3.65, interval=box) == ("rounding", "input-rounding")
+    assert verdict("3.62", 3.65) == ("erratum", None)
+    assert verdict("3.80", 3.65, interval=box) == ("erratum", None)
+
+
+def test_constant_uncertainty_widens_h() -> None:
+    two_u = Fraction(2 * 1.5e-15)
+    assert judge_equal(parse_number("6.674E-11"), exact(6.6743e-11), extra=two_u).verdict == (
+        "verified"
+    )
+    assert judge_equal(parse_number("6.672E-11"), exact(6.6743e-11), extra=two_u).verdict == (
+        "erratum"
+    )
+
+
+def test_count_is_exact() -> None:
+    assert verdict("11", 11, exact_only=True) == ("verified", None)
+    assert verdict("11", 12, exact_only=True) == ("erratum", None)
+
+
+# -- relations -----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("relation", "printed", "model", "expected"),
+    [
+        ("<", "3.0", 2.9, "verified"),
+        ("<", "3.0", 3.0, "erratum"),
+        (">", "9.0", 9.4, "verified"),
+        (">", "9.0", 8.9, "erratum"),
+        ("<=", "3", 3, "verified"),
+        (">=", "3", 2, "erratum"),
+    ],
+)
+def test_order_relations(relation: str, printed: str, model: float, expected: str) -> None:
+    assert judge_relation(relation, parse_number(printed), exact(model)).verdict == expected
+
+
+def test_approximate_relation() -> None:
+    p = parse_number("5.8")
+    assert judge_relation("~", p, exact(5.65), rel_tol=0.05).verdict == "verified"
+    assert judge_relation("~", p, exact(5.0), rel_tol=0.05).verdict == "erratum"
+
+
+def test_between() -> None:
+    bounds = (parse_number("4"), parse_number("5"))
+    p = parse_number("4")
+    assert judge_relation("between", p, exact(4.5), bounds=bounds).verdict == "verified"
+    assert judge_relation("between", p, exact(5.5), bounds=bounds).verdict == "erratum"
+
+
+def test_order_of_magnitude() -> None:
+    assert in_order_of(exact(3.4e-43), Fraction(1, 10**43))
+    assert in_order_of(exact(9.9e-44), Fraction(1, 10**43))  # within half a decade
+    assert not in_order_of(exact(2e-44), Fraction(1, 10**43))
+    assert not in_order_of(exact(1e-42), Fraction(1, 10**43))
+
+
+def test_model_value_must_be_finite() -> None:
+    with pytest.raises(ValueError, match="not finite"):
+        exact(float("nan"))
+
+
+# -- automatic diagnosis -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("printed", "correct", "kind"),
+    [
+        ("-7.071", "7.071", "sign"),
+        ("0.77", "0.077", "decimal-shift"),
+        ("4,250", "42.50", "decimal-shift"),
+        ("3.26", "3.62", "digit-swap"),
+        ("3.2", "3.62", "dropped-digit"),
+        ("3.662", "3.62", "extra-digit"),
+        ("7.24", "3.62", "factor"),
+        ("1.81", "3.62", "factor"),
+        ("11.37", "3.62", "factor"),
+        ("5.03", "3.62", None),
+    ],
+)
+def test_automatic_diagnosis(printed: str, correct: str, kind: str | None) -> None:
+    found = diagnose(parse_number(printed), parse_number(correct))
+    assert (found.kind if found else None) == kind
