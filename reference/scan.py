@@ -85,9 +85,16 @@ def _hand_key(reason: str) -> str:
     return word
 
 
-def _claimed(book: Book, catalog: Catalog) -> dict[tuple[int, int], str]:
-    """(line, token start) of every catalogued token, with the claim id."""
+def _claimed(book: Book, catalog: Catalog, conflicts: list[str]) -> dict[tuple[int, int], str]:
+    """(line, token start) of every catalogued token, with the claim id; a token two claims
+    cover is a conflict."""
     out: dict[tuple[int, int], str] = {}
+
+    def mark(tok: Token, ident: str) -> None:
+        other = out.setdefault((tok.line, tok.start), ident)
+        if other != ident:
+            conflicts.append(f"line {tok.line} token {tok.text!r}: claimed by {other} and {ident}")
+
     for _, claim in catalog.claims():
         text = book.line(claim.line)
         tokens = tokenize_line(text, claim.line)
@@ -95,13 +102,13 @@ def _claimed(book: Book, catalog: Catalog) -> dict[tuple[int, int], str]:
         if match is None:
             continue  # the validator reports it
         for tok in match.tokens:
-            out[(tok.line, tok.start)] = claim.id
+            mark(tok, claim.id)
         if claim.line_end is not None:
             parts = {p for p in re.split(r"[/\s·⋅]+", normalize(claim.printed)) if p}
             for number in range(claim.line + 1, claim.line_end + 1):
                 for tok in tokenize_line(book.line(number), number):
                     if tok.norm in parts:
-                        out[(tok.line, tok.start)] = claim.id
+                        mark(tok, claim.id)
     return out
 
 
@@ -126,9 +133,9 @@ def _hand(book: Book, catalog: Catalog) -> tuple[dict[tuple[int, int], str], dic
 
 def scan(book: Book, catalog: Catalog, chapters: tuple[str, ...]) -> ScanResult:
     """Classify every number token of ``chapters`` (keys as in book.toml)."""
-    claimed = _claimed(book, catalog)
-    hand_tokens, hand_lines = _hand(book, catalog)
     result = ScanResult([], {}, [])
+    claimed = _claimed(book, catalog, result.conflicts)
+    hand_tokens, hand_lines = _hand(book, catalog)
     for key in chapters:
         chapter = book.identity.chapter(key)
         counts = result.chapters.setdefault(key, ChapterCounts(key))

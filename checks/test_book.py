@@ -1,0 +1,81 @@
+"""The book's identity (reference/book.toml) against the text, and clear errors for a wrong book."""
+
+from __future__ import annotations
+
+import hashlib
+from pathlib import Path
+
+import pytest
+
+from reference.book import Book, BookError, book_path, chapter_keys, identity, load_book
+
+
+@pytest.mark.integrity
+def test_identity_matches_the_text(book: Book) -> None:
+    ident = identity()
+    data = book.path.read_bytes()
+    assert hashlib.sha256(data).hexdigest() == ident.sha256
+    assert len(data.decode("utf-8").split("\n")) == ident.lines == 16964
+    assert not data.endswith(b"\n")
+
+
+@pytest.mark.integrity
+def test_chapter_starts_are_their_headings(book: Book) -> None:
+    for chapter in identity().chapters:
+        first = book.line(chapter.start).strip()
+        assert first.startswith(chapter.heading), (chapter.key, first)
+        after = first[len(chapter.heading) : len(chapter.heading) + 1]
+        assert not after.isdigit(), (chapter.key, first)
+
+
+def test_chapters_tile_the_book() -> None:
+    chapters = identity().chapters
+    assert chapters[0].start == 1
+    assert chapters[-1].end == identity().lines
+    for before, after in zip(chapters, chapters[1:], strict=False):
+        assert before.end + 1 == after.start
+
+
+def test_a_changed_book_is_refused(book: Book, tmp_path: Path) -> None:
+    copy = tmp_path / "bang-unit1.txt"
+    copy.write_bytes(book.path.read_bytes().replace(b"V3=3.62", b"V3=3.65", 1))
+    with pytest.raises(BookError, match="not the book the catalog cites"):
+        load_book(copy)
+
+
+def test_a_missing_book_is_refused(tmp_path: Path) -> None:
+    with pytest.raises(BookError, match="cannot read the book"):
+        load_book(tmp_path / "nowhere.txt")
+
+
+def test_no_book_given(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("BANGCHECK_BOOK", raising=False)
+    with pytest.raises(BookError, match="--book PATH or set BANGCHECK_BOOK"):
+        book_path(None)
+
+
+def test_a_relative_path_is_made_absolute(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("BANGCHECK_BOOK", "book.txt")
+    assert book_path(None) == Path("book.txt").resolve()
+    assert book_path("other.txt") == Path("other.txt").resolve()
+
+
+@pytest.mark.parametrize(
+    ("spec", "keys"),
+    [
+        ("8", ("8",)),
+        ("0-3", ("0", "1", "2", "3")),
+        ("4,5", ("4", "5")),
+        ("A1", ("A1",)),
+        ("12-A1", ("12", "A1")),
+        (None, tuple(c.key for c in identity().chapters)),
+    ],
+)
+def test_chapter_specs(spec: str | None, keys: tuple[str, ...]) -> None:
+    assert chapter_keys(spec) == keys
+
+
+@pytest.mark.parametrize("spec", ["13", "3-1", "x", "1-B2"])
+def test_bad_chapter_specs(spec: str) -> None:
+    with pytest.raises(ValueError, match="chapter"):
+        chapter_keys(spec)

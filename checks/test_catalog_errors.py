@@ -1,0 +1,264 @@
+"""Malformed catalog entries are rejected with one clear line each: file, claim id and field.
+
+A small valid catalog (the 100/30/10 tower of chapter 8) is written to a temporary directory;
+each test spoils it in one way and checks the one problem reported.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from reference.book import Book
+from reference.catalog import read_catalog
+from reference.schema import CatalogError, Problem
+from reference.validate import validate
+from reports.cli import main
+
+pytestmark = pytest.mark.integrity
+
+FILE = "reference/claims/ch08.toml"
+META = """[meta]
+chapter = "8"
+title = "N-body collisions"
+lines = [6510, 6935]
+complete = false
+schema = 1
+"""
+GIVENS = """
+[[claim]]
+id = "ch08.t.drop"
+line = 6526
+occurrence = 1
+quote = "(Vn(0)=1 for"
+printed = "1"
+quantity = "drop speed"
+kind = "given"
+unit = "scaled"
+expect = "given"
+
+[[claim]]
+id = "ch08.t.m1"
+line = 6558
+quote = "m1=100"
+printed = "100"
+quantity = "bottom mass"
+kind = "given"
+expect = "given"
+
+[[claim]]
+id = "ch08.t.m2"
+line = 6559
+quote = "m2=30"
+printed = "30"
+quantity = "middle mass"
+kind = "given"
+expect = "given"
+
+[[claim]]
+id = "ch08.t.m3"
+line = 6561
+quote = "m3=10"
+printed = "10"
+quantity = "top mass"
+kind = "given"
+expect = "given"
+"""
+V3 = """
+[[claim]]
+id = "ch08.t.v3"
+line = 6562
+occurrence = 2
+quote = "velocity V3=3.62."
+printed = "3.62"
+quantity = "top ball velocity"
+kind = "derived"
+model = "towers.independent_tower"
+pick = "velocities[2]"
+expect = "verified"
+
+[claim.args]
+masses = [{ claim = "ch08.t.m1" }, { claim = "ch08.t.m2" }, { claim = "ch08.t.m3" }]
+v_drop = { claim = "ch08.t.drop" }
+"""
+
+
+def problems_of(tmp_path: Path, book: Book, text: str) -> list[Problem]:
+    (tmp_path / "ch08.toml").write_text(text, encoding="utf-8")
+    try:
+        catalog = read_catalog(tmp_path)
+    except CatalogError as err:
+        return err.problems
+    return validate(catalog, book)
+
+
+def one_problem(tmp_path: Path, book: Book, text: str) -> Problem:
+    found = problems_of(tmp_path, book, text)
+    assert len(found) == 1, "\n".join(map(str, found))
+    assert found[0].file == FILE
+    return found[0]
+
+
+def test_the_base_catalog_is_valid(tmp_path: Path, book: Book) -> None:
+    assert problems_of(tmp_path, book, META + GIVENS + V3) == []
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "ident", "field"),
+    [
+        ('quantity = "top ball velocity"\n', "", "ch08.t.v3", "quantity"),
+        ('quote = "velocity V3=3.62."', 'quote = "velocity V3=3.26."', "ch08.t.v3", "quote"),
+        ('model = "towers.independent_tower"', 'model = "towers.tall_tower"', "ch08.t.v3", "model"),
+        ('model = "towers.independent_tower"', 'model = "rockets.tower"', "ch08.t.v3", "model"),
+        ('pick = "velocities[2]"', 'pick = "velocities[2]"\nqoute = "x"', "ch08.t.v3", "qoute"),
+        ('id = "ch08.t.v3"', 'id = "ch09.t.v3"', "ch09.t.v3", "id"),
+        ("line = 6562", "line = 7000", "ch08.t.v3", "line"),
+        ('printed = "3.62"', 'printed = "3.6"', "ch08.t.v3", "printed"),
+        ("occurrence = 2\n", "", "ch08.t.v3", "occurrence"),
+        ("occurrence = 2", "occurrence = 3", "ch08.t.v3", "occurrence"),
+        (
+            '{ claim = "ch08.t.m3" }',
+            '{ claim = "ch08.t.m3" }, { claim = "ch08.t.m4" }',
+            "ch08.t.v3",
+            "args",
+        ),
+        ("v_drop =", "drop_speed =", "ch08.t.v3", "args"),
+        ('expect = "verified"', 'expect = "unmodeled"', "ch08.t.v3", "expect"),
+        ('expect = "verified"', 'expect = "erratum"\ncorrect = "3.62"', "ch08.t.v3", "diagnosis"),
+        ('pick = "velocities[2]"', 'pick = "velocities[two]"', "ch08.t.v3", "pick"),
+        ('expect = "verified"', 'expect = "verified"\nunit = "furlong"', "ch08.t.v3", "unit"),
+        (
+            'expect = "verified"',
+            'expect = "verified"\nrelation = "~"\nrel_tol = 0.01',
+            "ch08.t.v3",
+            "precision_reason",
+        ),
+        (
+            'expect = "verified"',
+            'expect = "verified"\nsigfigs = 2\nprecision_reason = "x"',
+            "ch08.t.v3",
+            "sigfigs",
+        ),
+        (
+            'expect = "verified"',
+            'expect = "verified"\nmeans = "3.62"\nnote = "n"',
+            "ch08.t.v3",
+            "garble",
+        ),
+        (
+            'kind = "derived"',
+            'kind = "constant"\nconstant = "standard-gravity"',
+            "ch08.t.v3",
+            "model",
+        ),
+    ],
+)
+def test_one_spoilt_field_gives_one_line(
+    tmp_path: Path, book: Book, old: str, new: str, ident: str, field: str
+) -> None:
+    text = META + GIVENS + V3
+    assert old in text
+    found = one_problem(tmp_path, book, text.replace(old, new, 1))
+    assert (found.id, found.field) == (ident, field)
+    line = str(found)
+    assert line.startswith(f"{FILE}: {ident}: field '{field}': ")
+
+
+def test_an_unreferenced_given_is_an_error(tmp_path: Path, book: Book) -> None:
+    found = problems_of(tmp_path, book, META + GIVENS)
+    assert [(p.id, p.field) for p in found] == [
+        (f"ch08.t.{name}", "kind") for name in ("drop", "m1", "m2", "m3")
+    ]
+
+
+def test_an_erratum_needs_the_printed_precision(tmp_path: Path, book: Book) -> None:
+    text = (META + GIVENS + V3).replace(
+        'expect = "verified"',
+        'expect = "erratum"\ncorrect = "3.615"\ndiagnosis = { kind = "arithmetic", note = "test" }',
+    )
+    found = one_problem(tmp_path, book, text)
+    assert (found.id, found.field) == ("ch08.t.v3", "correct")
+
+
+def test_a_complete_chapter_has_no_unmodeled_claim(tmp_path: Path, book: Book) -> None:
+    text = (META + GIVENS + V3).replace("complete = false", "complete = true")
+    text = text.replace('model = "towers.independent_tower"\n', "")
+    text = text.replace('pick = "velocities[2]"\n', "")
+    text = text[: text.index("[claim.args]")]
+    found = problems_of(tmp_path, book, text)
+    assert ("ch08.t.v3", "model") in {(p.id, p.field) for p in found}
+
+
+def test_circular_references(tmp_path: Path, book: Book) -> None:
+    loop = V3.replace('id = "ch08.t.v3"', 'id = "ch08.t.a"').replace(
+        'v_drop = { claim = "ch08.t.drop" }', 'v_drop = { claim = "ch08.t.b" }'
+    )
+    loop += (
+        V3.replace('id = "ch08.t.v3"', 'id = "ch08.t.b"')
+        .replace('v_drop = { claim = "ch08.t.drop" }', 'v_drop = { claim = "ch08.t.a" }')
+        .replace('quote = "velocity V3=3.62."', 'quote = "(V2=0.54,V3=3.62)"')
+        .replace("occurrence = 2", "occurrence = 1")
+    )
+    found = problems_of(tmp_path, book, META + GIVENS + loop)
+    assert any("circular" in p.message for p in found), found
+
+
+def test_a_restatement_of_an_unknown_claim(tmp_path: Path, book: Book) -> None:
+    restated = """
+[[claim]]
+id = "ch08.t.v3-intro"
+line = 6527
+quote = "V3=3.62 is had"
+printed = "3.62"
+quantity = "top ball velocity"
+kind = "derived"
+restates = "ch08.t.v9"
+expect = "verified"
+"""
+    found = one_problem(tmp_path, book, META + GIVENS + V3 + restated)
+    assert (found.id, found.field) == ("ch08.t.v3-intro", "restates")
+
+
+def test_duplicate_ids(tmp_path: Path, book: Book) -> None:
+    found = problems_of(tmp_path, book, META + GIVENS + V3 + V3)
+    assert [(p.id, p.field) for p in found] == [("ch08.t.v3", "id")]
+
+
+def test_bad_toml_names_the_file(tmp_path: Path, book: Book) -> None:
+    found = one_problem(tmp_path, book, META + "[[claim]\nid = ")
+    assert "not valid TOML" in found.message
+
+
+def test_meta_must_match_the_book(tmp_path: Path, book: Book) -> None:
+    text = (META + GIVENS + V3).replace("lines = [6510, 6935]", "lines = [6510, 6900]")
+    found = one_problem(tmp_path, book, text)
+    assert (found.id, found.field) == ("meta", "lines")
+
+
+@pytest.mark.parametrize(
+    ("entry", "field"),
+    [
+        ('[[excluded]]\nline = 6562\ntoken = "30/10"\nreason = "because"\n', "reason"),
+        ('[[excluded]]\nline = 6562\ntoken = "31/10"\nreason = "notation"\n', "token"),
+        ('[[excluded]]\nline = 6562\ntoken = "3"\nreason = "notation"\n', "token"),
+        ('[[excluded]]\nlines = [6600, 6500]\nreason = "symbolic-matrix"\n', "lines"),
+        ('[[excluded]]\nline = 6562\ntoken = "30/10"\nreason = "restates ch08.nope"\n', "reason"),
+    ],
+)
+def test_bad_hand_exclusions(tmp_path: Path, book: Book, entry: str, field: str) -> None:
+    found = one_problem(tmp_path, book, META + GIVENS + V3 + "\n" + entry)
+    assert found.field == field
+
+
+def test_cli_rejects_a_malformed_catalog_with_one_line_per_problem(
+    tmp_path: Path, book: Book, capsys: pytest.CaptureFixture[str]
+) -> None:
+    text = (META + GIVENS + V3).replace('quantity = "top ball velocity"\n', "")
+    text = text.replace('quote = "m1=100"', 'quote = "m1=1000"')
+    (tmp_path / "ch08.toml").write_text(text, encoding="utf-8")
+    code = main(["claims", "--book", str(book.path), "--catalog", str(tmp_path)])
+    err = capsys.readouterr().err.splitlines()
+    assert code == 2
+    assert err[0] == "bangcheck: the catalog is invalid (1 problem(s)):"
+    assert err[1:] == [f"{FILE}: ch08.t.v3: field 'quantity': required field is missing"]
