@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import hashlib
+import itertools
 from pathlib import Path
 
 import pytest
@@ -32,7 +33,7 @@ def test_chapters_tile_the_book() -> None:
     chapters = identity().chapters
     assert chapters[0].start == 1
     assert chapters[-1].end == identity().lines
-    for before, after in zip(chapters, chapters[1:], strict=False):
+    for before, after in itertools.pairwise(chapters):
         assert before.end + 1 == after.start
 
 

@@ -34,7 +34,8 @@ def test_every_constant_is_sourced_and_consistent() -> None:
         assert math.isfinite(const.value), key
         assert (const.uncertainty == 0) if const.exact else (const.uncertainty > 0), key
         for old in const.older:
-            assert old.edition and old.edition != const.edition, key
+            assert old.edition, key
+            assert old.edition != const.edition, key
 
 
 def test_older_editions_of_g() -> None:

@@ -1,0 +1,141 @@
+"""Integrity of the real catalog and its evaluation.
+
+The catalog's own rules (ids, lines, quotes, tokens, models, references, errata fields) are
+checked at collection (conftest) and each is shown to catch its problem in
+test_catalog_errors.py; here are the checks that need the evaluation or the scan.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from reference import calls as calls_module
+from reference.book import Book, identity
+from reference.catalog import Catalog
+from reference.evaluate import Evaluation
+from reference.scan import scan
+from reference.validate import parsed, validate
+
+pytestmark = pytest.mark.integrity
+
+
+def test_the_catalog_is_valid_against_the_book(catalog: Catalog, book: Book) -> None:
+    assert validate(catalog, book) == []
+
+
+def test_one_file_per_chapter(catalog: Catalog) -> None:
+    assert [f.stem for f in catalog.files] == [c.file_stem for c in identity().chapters]
+
+
+def test_restatements_equal_what_they_restate(catalog: Catalog) -> None:
+    by_id = catalog.by_id()
+    unequal = []
+    for _, claim in catalog.claims():
+        if claim.restates is None:
+            continue
+        mine, theirs = parsed(claim), parsed(by_id[claim.restates])
+        coarser = max(mine.tolerance, theirs.tolerance)
+        if abs(mine.value - theirs.value) > coarser:
+            unequal.append((claim.id, claim.printed, claim.restates))
+    assert not unequal
+
+
+def test_errata_agree_with_their_correct_value(evaluation: Evaluation) -> None:
+    wrong = [
+        (c.id, c.correct, c.model_value)
+        for c in evaluation
+        if c.expect == "erratum" and not c.correct_agrees
+    ]
+    assert not wrong
+
+
+def test_expected_errata_really_disagree_with_the_model(evaluation: Evaluation) -> None:
+    for c in evaluation:
+        if c.expect == "erratum":
+            assert c.model_value is not None
+            assert c.tolerance is not None
+            assert abs(c.model_value - (c.value or 0)) > 2 * c.tolerance, c.id
+
+
+def test_no_claim_expects_unmodeled_or_is_indeterminate(evaluation: Evaluation) -> None:
+    assert not [c.id for c in evaluation if c.verdict == "indeterminate"]
+    assert not [c.id for c in evaluation if c.expect in ("unmodeled", "indeterminate")]
+
+
+def test_complete_chapters_have_no_missing_token_and_no_unmodeled_claim(
+    catalog: Catalog, book: Book, evaluation: Evaluation
+) -> None:
+    complete = tuple(f.meta.chapter for f in catalog.files if f.meta.complete)
+    if not complete:
+        pytest.skip("no chapter is marked complete yet")
+    result = scan(book, catalog, complete)
+    assert [(t.line, t.text) for t in result.missing] == []
+    assert not [c.id for c in evaluation if c.chapter in complete and c.verdict == "unmodeled"]
+
+
+def test_rounding_claims_say_why(evaluation: Evaluation) -> None:
+    for c in evaluation:
+        assert (c.verdict == "rounding") == (c.rounding_reason is not None), c.id
+
+
+def test_json_has_no_nan_and_every_field(evaluation: Evaluation) -> None:
+    fields = [
+        "id",
+        "chapter",
+        "line",
+        "line_end",
+        "occurrence",
+        "quote",
+        "printed",
+        "means",
+        "garble",
+        "value",
+        "model_value",
+        "interval",
+        "tolerance",
+        "rounding_reason",
+        "relation",
+        "unit",
+        "kind",
+        "verdict",
+        "expect",
+        "correct",
+        "diagnosis",
+        "quantity",
+        "model",
+        "args",
+        "model_error",
+        "assumptions",
+        "figure",
+        "equation",
+    ]
+    for c in evaluation:
+        row = json.loads(json.dumps(c.to_json(), allow_nan=False))
+        assert set(fields) <= set(row), c.id
+        for value in (row["value"], row["model_value"], row["tolerance"]):
+            assert value is None or isinstance(value, list) or math.isfinite(value)
+
+
+def test_shared_model_calls_are_made_once(evaluation: Evaluation) -> None:
+    # The tower claims share one call of towers.independent_tower; the e-series one per order.
+    modelled = [c for c in evaluation if c.model and c.interval is None]
+    distinct = {(c.model, json.dumps(c.args, sort_keys=True)) for c in modelled}
+    assert evaluation.model_calls == len(distinct) < len(modelled)
+
+
+def test_the_cache_calls_a_model_once_per_arguments(monkeypatch: pytest.MonkeyPatch) -> None:
+    calls = []
+
+    def model(masses: list[int], v_drop: int) -> float:
+        calls.append((masses, v_drop))
+        return 1.0
+
+    monkeypatch.setattr(calls_module, "resolve", lambda name: model)
+    cache = calls_module.ModelCache()
+    for _ in range(3):
+        cache.picked("ch08.x", "towers.independent_tower", {"masses": [100, 30], "v_drop": 1}, "")
+    cache.picked("ch08.x", "towers.independent_tower", {"masses": [100, 31], "v_drop": 1}, "")
+    assert (len(calls), cache.calls) == (2, 2)
