@@ -1,0 +1,60 @@
+"""Wall-time budget of design section 6, measured cold (a new process each run), median of 5.
+
+Run from the project root:  python benchmarks/budget.py [--runs 5] [--book PATH]
+Not collected by the default pytest run (testpaths = checks).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def timed(command: list[str], env: dict[str, str], runs: int) -> tuple[float, list[float], int]:
+    times = []
+    code = 0
+    for _ in range(runs):
+        start = time.perf_counter()
+        done = subprocess.run(command, cwd=ROOT, env=env, capture_output=True, check=False)
+        times.append(time.perf_counter() - start)
+        code = done.returncode
+    return statistics.median(times), times, code
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--book", default=os.environ.get("BANGCHECK_BOOK"))
+    parser.add_argument("--skip-pytest", action="store_true")
+    args = parser.parse_args()
+    if not args.book:
+        sys.exit("give --book PATH or set BANGCHECK_BOOK")
+    env = {**os.environ, "BANGCHECK_BOOK": str(Path(args.book).resolve()), "CI": "true"}
+    bangcheck = shutil.which("bangcheck") or sys.exit("bangcheck is not installed")
+    cases = {
+        "bangcheck claims --json": ([bangcheck, "claims", "--json"], 2.0),
+        "bangcheck scan": ([bangcheck, "scan"], 2.0),
+    }
+    if not args.skip_pytest:
+        cases["pytest (ci profile, serial)"] = ([sys.executable, "-m", "pytest", "-q", "-p",
+                                                  "no:cacheprovider"], 30.0)
+        cases["pytest -n 2"] = ([sys.executable, "-m", "pytest", "-q", "-n", "2", "-p",
+                                  "no:cacheprovider"], 20.0)
+    print(f"{'command':<30} {'median s':>9} {'budget s':>9}  runs (exit code)")
+    for name, (command, budget) in cases.items():
+        median, times, code = timed(command, env, args.runs)
+        flag = "" if median <= budget else "  OVER BUDGET"
+        shown = " ".join(f"{t:.2f}" for t in times)
+        print(f"{name:<30} {median:>9.2f} {budget:>9.1f}  {shown} ({code}){flag}")
+
+
+if __name__ == "__main__":
+    main()
