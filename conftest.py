@@ -22,7 +22,7 @@ from hypothesis import settings
 from reference.book import Book, BookError, book_path, load_book
 from reference.catalog import Catalog, read_catalog
 from reference.compare import VERDICTS
-from reference.evaluate import Evaluation, evaluate_catalog
+from reference.evaluation import Evaluation, evaluate_catalog
 from reference.schema import CatalogError
 from reference.validate import validate
 

@@ -44,10 +44,14 @@ def main() -> None:
         "bangcheck scan": ([bangcheck, "scan"], 2.0),
     }
     if not args.skip_pytest:
-        cases["pytest (ci profile, serial)"] = ([sys.executable, "-m", "pytest", "-q", "-p",
-                                                  "no:cacheprovider"], 30.0)
-        cases["pytest -n 2"] = ([sys.executable, "-m", "pytest", "-q", "-n", "2", "-p",
-                                  "no:cacheprovider"], 20.0)
+        cases["pytest (ci profile, serial)"] = (
+            [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider"],
+            30.0,
+        )
+        cases["pytest -n 2"] = (
+            [sys.executable, "-m", "pytest", "-q", "-n", "2", "-p", "no:cacheprovider"],
+            20.0,
+        )
     print(f"{'command':<30} {'median s':>9} {'budget s':>9}  runs (exit code)")
     for name, (command, budget) in cases.items():
         median, times, code = timed(command, env, args.runs)

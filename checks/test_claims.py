@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from reference.evaluate import EvaluatedClaim, Evaluation
+from reference.evaluation import EvaluatedClaim, Evaluation
 
 pytestmark = pytest.mark.claims
 

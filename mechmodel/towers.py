@@ -20,11 +20,13 @@ from mechmodel.collisions import Collision, collide
 class Tower:
     """A tower's ball-ball bangs, bottom first, and its balls' final velocities.
 
-    ``bangs[k]`` is Bang(k+2) between balls k+1 and k+2 (the book's Bang(2)12, Bang(3)23, ...);
-    ``velocities[k]`` is ball k+1's final velocity.
+    ``rebound`` is ball 1's velocity just after the floor bounce; ``bangs[k]`` is Bang(k+2)
+    between balls k+1 and k+2 (the book's Bang(2)12, Bang(3)23, ...), with its velocities before
+    and after; ``velocities[k]`` is ball k+1's final velocity.
     """
 
     masses: tuple[Any, ...]
+    rebound: Any
     bangs: tuple[Collision, ...]
     velocities: tuple[Any, ...]
 
@@ -43,10 +45,10 @@ def independent_tower(masses: Sequence[Any], v_drop: Any = 1) -> Tower:
     for i, m in enumerate(masses):
         inputs.mass(m, f"masses[{i}]")
     inputs.positive(v_drop, "v_drop")
-    rising = collide(math.inf, masses[0], 0, -v_drop).v2
+    rebound = rising = collide(math.inf, masses[0], 0, -v_drop).v2
     bangs = []
     for lower, upper in itertools.pairwise(masses):
         bangs.append(collide(lower, upper, rising, -v_drop))
         rising = bangs[-1].v2
     finals = (*(bang.v1 for bang in bangs), rising)
-    return Tower(tuple(masses), tuple(bangs), finals)
+    return Tower(tuple(masses), rebound, tuple(bangs), finals)

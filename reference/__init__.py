@@ -5,6 +5,6 @@ tables, the tokenizer and scan, validation, comparison, input intervals and diag
 ``evaluate()`` returns the evaluated claims.
 """
 
-from reference.evaluate import EvaluatedClaim, Evaluation, evaluate
+from reference.evaluation import EvaluatedClaim, Evaluation, evaluate
 
 __all__ = ["EvaluatedClaim", "Evaluation", "evaluate"]

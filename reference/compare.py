@@ -75,7 +75,9 @@ def judge_equal(
     """Verdict of the relation ``=``.
 
     ``extra`` widens h (twice a constant's uncertainty). ``interval`` is the model's range over
-    the box of input roundings. ``exact_only`` (a count) admits no rounding.
+    the box of input roundings; a value inside it (widened by h) is ``input-rounding``, the
+    most telling reason, before truncation and other-way rounding within 2h. ``exact_only`` (a
+    count) admits no rounding.
     """
     target = printed.value
     value = abs(model) if printed.absolute else model
@@ -85,15 +87,15 @@ def judge_equal(
         return Judgement("verified" if diff == 0 else "erratum", None, Fraction(0))
     if _inside(diff, tol):
         return Judgement("verified", None, tol)
-    if not printed.exact and _inside(diff, 2 * printed.half_width + extra):
-        reason: RoundingReason = "truncation" if _is_truncation(printed, value) else "other-way"
-        return Judgement("rounding", reason, tol)
     if interval is not None:
         lo, hi = interval
         if printed.absolute:
             lo, hi = sorted((abs(lo), abs(hi))) if lo * hi >= 0 else (Fraction(0), max(-lo, hi))
         if lo - tol * (1 + SLACK) <= target <= hi + tol * (1 + SLACK):
             return Judgement("rounding", "input-rounding", tol)
+    if not printed.exact and _inside(diff, 2 * printed.half_width + extra):
+        reason: RoundingReason = "truncation" if _is_truncation(printed, value) else "other-way"
+        return Judgement("rounding", reason, tol)
     return Judgement("erratum", None, tol)
 
 

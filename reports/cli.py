@@ -17,7 +17,7 @@ from typing import Any
 from reference.book import BookError, book_path, chapter_keys, load_book
 from reference.calls import ModelCallError
 from reference.compare import VERDICTS
-from reference.evaluate import Evaluation, evaluate_catalog
+from reference.evaluation import Evaluation, evaluate_catalog
 from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog

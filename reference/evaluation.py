@@ -305,14 +305,20 @@ class _Evaluator:
         judgement = judge_equal(printed, exact(value), extra=extra)
         auto = None
         if judgement.verdict == "erratum":
-            for old in editions[1:]:
-                old_extra = Fraction(2 * old.uncertainty / factor)
-                if judge_equal(printed, exact(old.value / factor), extra=old_extra).verdict in (
-                    "verified",
-                    "rounding",
-                ):
-                    auto = f"dated: matches {old.edition} ({old.value:g} {const.unit})"
-                    break
+            matching = [
+                old
+                for old in editions[1:]
+                if judge_equal(
+                    printed,
+                    exact(old.value / factor),
+                    extra=Fraction(2 * old.uncertainty / factor),
+                ).verdict
+                in ("verified", "rounding")
+            ]
+            if matching:
+                # the edition the book most likely used: the closest value among those matching
+                best = min(matching, key=lambda e: abs(exact(e.value / factor) - printed.value))
+                auto = f"dated: matches {best.edition} ({best.value:g} {const.unit})"
         return judgement, value, auto
 
     def record(
@@ -345,7 +351,7 @@ class _Evaluator:
                 "auto": auto,
             }
         tol = judgement.tolerance
-        wide = bool(interval and tol and (interval[1] - interval[0]) > WIDE_INTERVAL * 2 * tol)
+        wide = bool(interval and tol and (interval[1] - interval[0]) > WIDE_INTERVAL * tol)
         return EvaluatedClaim(
             id=claim.id,
             chapter=f.meta.chapter,
