@@ -150,3 +150,10 @@ def test_the_cache_calls_a_model_once_per_arguments(monkeypatch: pytest.MonkeyPa
         cache.picked("ch08.x", "towers.independent_tower", {"masses": [100, 30], "v_drop": 1}, "")
     cache.picked("ch08.x", "towers.independent_tower", {"masses": [100, 31], "v_drop": 1}, "")
     assert (len(calls), cache.calls) == (2, 2)
+
+
+def test_to_frame_gives_one_row_per_claim(evaluation: Evaluation) -> None:
+    frame = evaluation.to_frame()
+    assert len(frame) == len(evaluation)
+    assert list(frame["id"]) == [c.id for c in evaluation]
+    assert {"verdict", "model_value", "tolerance"} <= set(frame.columns)

@@ -136,9 +136,17 @@ def _print_scan(result: ScanResult, book_lines: Sequence[str], list_missing: boo
             hand=c.excluded_hand,
             missing=c.missing,
         )
-    print("\nexcluded per rule:")
-    for name, n in result.rule_counts().most_common():
-        print(f"  {name:<18} {n:>6}")
+    rules = [name for name, _ in result.rule_counts().most_common()]
+    print("\nexcluded per rule and chapter:")
+    print(f"  {'rule':<18} {'total':>6}  " + " ".join(f"{k:>5}" for k in result.chapters))
+    for name in rules:
+        per_chapter = " ".join(f"{c.rules[name]:>5}" for c in result.chapters.values())
+        print(f"  {name:<18} {result.rule_counts()[name]:>6}  {per_chapter}")
+    reasons = sorted({r for c in result.chapters.values() for r in c.reasons})
+    for reason in reasons:
+        per_chapter = " ".join(f"{c.reasons[reason]:>5}" for c in result.chapters.values())
+        total = sum(c.reasons[reason] for c in result.chapters.values())
+        print(f"  {'hand: ' + reason:<18} {total:>6}  {per_chapter}")
     if list_missing:
         print("\nmissing tokens:")
         for t in result.missing:
