@@ -20,11 +20,11 @@ import pytest
 from hypothesis import settings
 
 from reference.book import Book, BookError, book_path, load_book
-from reference.catalog import Catalog, read_catalog
+from reference.catalog import Catalog
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
 from reference.schema import CatalogError
-from reference.validate import validate
+from reference.validate import checked_catalog
 
 IN_CI = os.environ.get("CI", "").lower() == "true"
 MIN_EXAMPLES = 50  # the ci profile's floor: speed never hollows a property out
@@ -64,13 +64,9 @@ def pytest_configure(config: pytest.Config) -> None:
     book = _load_book(config)
     config.stash[_BOOK] = book
     try:
-        catalog = read_catalog()
+        config.stash[_CATALOG] = checked_catalog(book)
     except CatalogError as err:
         raise pytest.UsageError(f"the catalog is invalid:\n{err}") from err
-    problems = validate(catalog, book)
-    if problems:
-        raise pytest.UsageError("the catalog is invalid:\n" + "\n".join(map(str, problems)))
-    config.stash[_CATALOG] = catalog
 
 
 def catalog_of(config: pytest.Config) -> Catalog:

@@ -37,9 +37,11 @@ class ChapterFile:
 
 @dataclass(frozen=True)
 class Catalog:
-    """All chapter files, in book order."""
+    """All chapter files, in book order; ``rejected`` holds the ids of entries that failed the
+    schema (so that references to them are not reported a second time as unknown)."""
 
     files: tuple[ChapterFile, ...]
+    rejected: frozenset[str] = frozenset()
 
     def claims(self) -> Iterator[tuple[ChapterFile, Claim]]:
         """Every claim with the file that holds it, in file order then line order."""
@@ -81,7 +83,12 @@ def _entry_problems(name: str, ident: str, err: ValidationError) -> list[Problem
 
 
 def _entries(
-    name: str, raw: dict[str, Any], table: str, model: type[BaseModel], problems: list[Problem]
+    name: str,
+    raw: dict[str, Any],
+    table: str,
+    model: type[BaseModel],
+    problems: list[Problem],
+    rejected: set[str],
 ) -> tuple:
     rows = raw.get(table, [])
     if not isinstance(rows, list):
@@ -97,11 +104,15 @@ def _entries(
             out.append(model.model_validate(row))
         except ValidationError as err:
             problems.extend(_entry_problems(name, ident, err))
+            rejected.add(ident)
     return tuple(out)
 
 
-def read_file(path: Traversable | Path, problems: list[Problem]) -> ChapterFile | None:
-    """Parse one catalog file, adding its schema problems to ``problems``."""
+def read_file(
+    path: Traversable | Path, problems: list[Problem], rejected: set[str]
+) -> ChapterFile | None:
+    """Parse one catalog file, adding its schema problems to ``problems`` and the ids of the
+    entries that failed to ``rejected``."""
     name = display_name(path)
     try:
         raw = tomllib.loads(path.read_text(encoding="utf-8"))
@@ -118,25 +129,32 @@ def read_file(path: Traversable | Path, problems: list[Problem]) -> ChapterFile 
     except ValidationError as err:
         problems.extend(_entry_problems(name, "meta", err))
         return None
-    claims = _entries(name, raw, "claim", Claim, problems)
-    excluded = _entries(name, raw, "excluded", Excluded, problems)
-    slips = _entries(name, raw, "slip", Slip, problems)
+    claims = _entries(name, raw, "claim", Claim, problems, rejected)
+    excluded = _entries(name, raw, "excluded", Excluded, problems, rejected)
+    slips = _entries(name, raw, "slip", Slip, problems, rejected)
     stem = name.rsplit("/", 1)[-1].removesuffix(".toml")
     return ChapterFile(name, stem, meta, claims, excluded, slips)
 
 
-def read_catalog(directory: Traversable | Path | None = None) -> Catalog:
-    """Parse every ``ch*.toml`` of ``directory`` (default: the packaged catalog).
-
-    Raises ``CatalogError`` with every schema problem found.
-    """
+def read_catalog_partly(
+    directory: Traversable | Path | None = None,
+) -> tuple[Catalog, list[Problem]]:
+    """Parse every ``ch*.toml`` of ``directory`` (default: the packaged catalog), keeping the
+    entries that pass the schema, and return them with the schema problems found."""
     root = directory if directory is not None else default_directory()
     paths = sorted(
         (p for p in root.iterdir() if p.name.startswith("ch") and p.name.endswith(".toml")),
         key=lambda p: p.name,
     )
     problems: list[Problem] = []
-    chapter_files = [f for p in paths if (f := read_file(p, problems)) is not None]
+    rejected: set[str] = set()
+    chapter_files = [f for p in paths if (f := read_file(p, problems, rejected)) is not None]
+    return Catalog(tuple(chapter_files), frozenset(rejected)), problems
+
+
+def read_catalog(directory: Traversable | Path | None = None) -> Catalog:
+    """Parse the catalog; ``CatalogError`` with every schema problem found."""
+    catalog, problems = read_catalog_partly(directory)
     if problems:
         raise CatalogError(problems)
-    return Catalog(tuple(chapter_files))
+    return catalog

@@ -15,7 +15,7 @@ from importlib.resources.abc import Traversable
 from pathlib import Path
 
 from reference.book import Book, identity
-from reference.catalog import Catalog, ChapterFile, read_catalog
+from reference.catalog import Catalog, ChapterFile, read_catalog_partly
 from reference.locate import matches, pick_occurrence
 from reference.models import check_signature, pick_steps, resolve
 from reference.numbers import NumberFormatError, Printed, parse_number, significant_digits
@@ -298,7 +298,7 @@ class _Checker:
             add("reason", f"must start with one of {HAND_REASONS}")
         if word == "restates":
             target = e.reason.split(maxsplit=1)[1:] or [""]
-            if target[0] not in self.catalog.by_id():
+            if target[0] not in self.catalog.by_id() and target[0] not in self.catalog.rejected:
                 add("reason", f"restates an unknown claim {target[0]!r}")
         if word == "not-a-claim" and not e.reason.partition(":")[2].strip():
             add("reason", "not-a-claim needs its words: 'not-a-claim: why'")
@@ -341,16 +341,18 @@ class _Checker:
         for f, c in self.catalog.claims():
             for ref in references(c):
                 used.add(ref)
-                if ref not in by_id:
+                if ref not in by_id and ref not in self.catalog.rejected:
                     field = "restates" if ref == c.restates else "args"
                     self.add(f, c.id, field, f"refers to an unknown claim {ref!r}")
                 elif ref == c.id:
                     self.add(f, c.id, "args", "a claim cannot refer to itself")
             for dep in c.depends_on:
-                if dep not in by_id:
+                if dep not in by_id and dep not in self.catalog.rejected:
                     self.add(f, c.id, "depends_on", f"unknown claim {dep!r}")
         for f, c in self.catalog.claims():
-            if c.kind == "given" and c.id not in used and c.restates is None:
+            # a rejected entry may be the one that references a given: judge only a whole catalog
+            unreferenced = c.id not in used and not self.catalog.rejected
+            if c.kind == "given" and unreferenced and c.restates is None:
                 self.add(f, c.id, "kind", "a given that no claim references (args or restates)")
             if (
                 f.meta.complete
@@ -398,9 +400,10 @@ def validate(catalog: Catalog, book: Book | None) -> list[Problem]:
 
 
 def checked_catalog(book: Book | None, directory: Traversable | Path | None = None) -> Catalog:
-    """Read and validate the catalog; ``CatalogError`` with one line per problem."""
-    catalog = read_catalog(directory)
-    problems = validate(catalog, book)
+    """Read and validate the catalog; ``CatalogError`` with one line per problem, the schema's
+    and the rules' together."""
+    catalog, problems = read_catalog_partly(directory)
+    problems = problems + validate(catalog, book)
     if problems:
         raise CatalogError(problems)
     return catalog
