@@ -259,5 +259,6 @@ def test_cli_rejects_a_malformed_catalog_with_one_line_per_problem(
     code = main(["claims", "--book", str(book.path), "--catalog", str(tmp_path)])
     err = capsys.readouterr().err.splitlines()
     assert code == 2
-    assert err[0] == "bangcheck: the catalog is invalid (1 problem(s)):"
-    assert err[1:] == [f"{FILE}: ch08.t.v3: field 'quantity': required field is missing"]
+    assert err[0] == "bangcheck: the catalog is invalid (2 problem(s)):"
+    assert err[1].startswith(f"{FILE}: ch08.t.m1: field 'quote': is not on line 6558")
+    assert err[2:] == [f"{FILE}: ch08.t.v3: field 'quantity': required field is missing"]
