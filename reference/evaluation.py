@@ -150,9 +150,7 @@ def _correct_string(printed: Printed, model: Fraction) -> str | None:
 
 
 class _Evaluator:
-    def __init__(self, catalog: Catalog, book: Book) -> None:
-        self.catalog = catalog
-        self.book = book
+    def __init__(self, catalog: Catalog) -> None:
         self.claims = catalog.by_id()
         self.files = catalog.file_of()
         self.cache = ModelCache()
@@ -168,13 +166,9 @@ class _Evaluator:
         """Model value (printed unit), input interval, why there is none, model error."""
         assert claim.model is not None
         args, inputs = build_args(claim.args, self.lookup)
-        rounded = [i for i in inputs if i.rounded]
         args.update(claim.assumptions)
-        factor = unit_factor(claim.unit)
-        raw = self.cache.picked(claim.id, claim.model, args, claim.pick)
-        value, error = self._split_error(claim, raw)
-        value = self._convert(claim, value, factor)
-        error = None if error is None else float(error) / factor
+        value, error = self._value_at(claim, args)
+        rounded = [i for i in inputs if i.rounded]
         interval, note = None, None
         if rounded:
             if not is_monotonic(resolve(claim.model)):
@@ -182,25 +176,20 @@ class _Evaluator:
             elif len(rounded) > MAX_ROUNDED_INPUTS:
                 note = f"{len(rounded)} rounded inputs: too many corners for an interval"
             else:
-                values = [
-                    self._convert(
-                        claim,
-                        self._split_error(
-                            claim, self.cache.picked(claim.id, claim.model, corner, claim.pick)
-                        )[0],
-                        factor,
-                    )
-                    for corner in corners(args, rounded)
-                ]
+                values = [self._value_at(claim, corner)[0] for corner in corners(args, rounded)]
                 reals = [exact(v.real if isinstance(v, complex) else v) for v in values]
                 interval = [min(reals), max(reals)]
         return value, interval, note, error
 
-    @staticmethod
-    def _split_error(claim: Claim, raw: Any) -> tuple[Any, Any]:
+    def _value_at(self, claim: Claim, args: dict[str, Any]) -> tuple[Any, float | None]:
+        """The model's picked value at ``args`` in the printed unit, and its declared error."""
+        assert claim.model is not None
+        raw = self.cache.picked(claim.id, claim.model, args, claim.pick)
+        error = None
         if hasattr(raw, "value") and hasattr(raw, "error"):
-            return raw.value, raw.error
-        return raw, None
+            raw, error = raw.value, raw.error
+        factor = unit_factor(claim.unit)
+        return self._convert(claim, raw, factor), None if error is None else float(error) / factor
 
     @staticmethod
     def _convert(claim: Claim, value: Any, factor: float) -> Any:
@@ -398,7 +387,7 @@ def evaluate_catalog(
     catalog: Catalog, book: Book, chapters: Sequence[str] | None = None, progress: bool = False
 ) -> Evaluation:
     """Evaluate the claims of ``chapters`` (default: all) of a validated ``catalog``."""
-    evaluator = _Evaluator(catalog, book)
+    evaluator = _Evaluator(catalog)
     wanted = set(chapters) if chapters is not None else None
     selected = [c.id for f, c in catalog.claims() if wanted is None or f.meta.chapter in wanted]
     out = []
