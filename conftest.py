@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Generator
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -105,6 +106,17 @@ def evaluation(pytestconfig: pytest.Config, book: Book) -> Evaluation:
     result = evaluation_of(pytestconfig)
     assert result is not None
     return result
+
+
+@pytest.fixture(scope="session")
+def report_dir(tmp_path_factory: pytest.TempPathFactory, book: Book) -> Path:
+    """One report, built by ``bangcheck report`` once per session for the report and browser
+    tests."""
+    from reports.cli import main
+
+    out = tmp_path_factory.mktemp("report") / "out"
+    assert main(["report", "--book", str(book.path), "--out", str(out)]) == 0
+    return out
 
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)

@@ -1,4 +1,4 @@
-"""The ``bangcheck`` command: ``claims`` and ``scan`` (design section 4).
+"""The ``bangcheck`` command: ``claims``, ``scan`` and ``report`` (design section 4).
 
 Data on stdout, progress and messages on stderr. Exit 0 on success, 1 when findings fail the
 command's check, 2 on usage errors, an invalid catalog, or a missing or wrong book.
@@ -49,6 +49,17 @@ def _parser() -> argparse.ArgumentParser:
     scanner = sub.add_parser("scan", parents=[common], help="every number token's status")
     scanner.add_argument("--json", action="store_true", help="one JSON document")
     scanner.add_argument("--missing", action="store_true", help="list every missing token")
+
+    report = sub.add_parser("report", parents=[common], help="the errata report (HTML, CSV, JSON)")
+    report.add_argument(
+        "--out", type=Path, default=Path("reports/out"), help="output directory (reports/out)"
+    )
+    report.add_argument(
+        "--properties",
+        type=Path,
+        default=Path("reports/out/properties.json"),
+        help="the property suite's results, shown when present (reports/out/properties.json)",
+    )
     return parser
 
 
@@ -172,6 +183,24 @@ def _scan(args: argparse.Namespace) -> int:
     return EXIT_FINDINGS if result.missing or result.conflicts else EXIT_OK
 
 
+def _report(args: argparse.Namespace) -> int:
+    from reports.output import write_atomically
+    from reports.page import build_report
+
+    book = load_book(book_path(args.book))
+    catalog = checked_catalog(book, args.catalog)
+    evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
+    result = scan(book, catalog, args.chapters)
+    print("bangcheck: rendering the report", file=sys.stderr)
+    properties = args.properties.resolve()
+    files = build_report(evaluation, result, catalog, properties)
+    out = args.out.resolve()
+    write_atomically(out, files)
+    print(f"bangcheck: wrote {out / 'index.html'}, errata.csv and claims.json", file=sys.stderr)
+    print(out / "index.html")
+    return EXIT_OK
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run ``bangcheck``; returns the exit status."""
     parser = _parser()
@@ -183,7 +212,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.catalog is not None and not args.catalog.is_dir():
         parser.error(f"--catalog {args.catalog}: not a directory")
     try:
-        return {"claims": _claims, "scan": _scan}[args.command](args)
+        return {"claims": _claims, "scan": _scan, "report": _report}[args.command](args)
     except BookError as err:
         print(f"bangcheck: error: {err}", file=sys.stderr)
     except CatalogError as err:

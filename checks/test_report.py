@@ -1,0 +1,251 @@
+"""The errata report: its files, their agreement, escaping, determinism and atomic writing.
+
+One report is built per test session (``report_dir``) with the ``bangcheck report`` command and
+shared by the tests.
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import io
+import json
+import re
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+
+from reference.book import Book
+from reference.catalog import Catalog
+from reference.evaluation import Evaluation
+from reference.scan import scan
+from reports.cli import main
+from reports.output import ERRATA_COLUMNS, write_atomically
+from reports.page import render_page
+
+pytestmark = pytest.mark.report
+
+VOID = {
+    "meta",
+    "br",
+    "input",
+    "img",
+    "hr",
+    "link",
+    "path",
+    "rect",
+    "circle",
+    "use",
+    "stop",
+    "line",
+    "polyline",
+    "polygon",
+    "ellipse",
+}
+SECTIONS = [
+    "summary",
+    "errata",
+    "claims",
+    "figures",
+    "slips",
+    "assumptions",
+    "tolerances",
+    "exclusions",
+]
+
+
+class Page(HTMLParser):
+    """Collects ids, claim rows, sections and checks that elements nest properly."""
+
+    def __init__(self) -> None:
+        super().__init__(convert_charrefs=True)
+        self.stack: list[str] = []
+        self.problems: list[str] = []
+        self.ids: list[str] = []
+        self.claim_rows: list[str] = []
+        self.sections: list[str] = []
+        self.errata_articles = 0
+        self.scripts = 0
+        self._in_count = False
+        self.errata_count = ""
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        a = dict(attrs)
+        if a.get("id"):
+            self.ids.append(a["id"] or "")
+        if tag == "tr" and a.get("class") == "claim":
+            self.claim_rows.append((a.get("id") or "").removeprefix("claim-"))
+        if tag == "section":
+            self.sections.append(a.get("id") or "")
+        if tag == "article" and a.get("class") == "erratum":
+            self.errata_articles += 1
+        if tag == "script":
+            self.scripts += 1
+        self._in_count = a.get("id") == "errata-count"
+        if tag not in VOID:
+            self.stack.append(tag)
+
+    def handle_startendtag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        a = dict(attrs)
+        if a.get("id"):
+            self.ids.append(a["id"] or "")
+
+    def handle_endtag(self, tag: str) -> None:
+        if tag in VOID:
+            return
+        if not self.stack or self.stack[-1] != tag:
+            self.problems.append(f"</{tag}> closes {self.stack[-1:] or 'nothing'}")
+            return
+        self.stack.pop()
+
+    def handle_data(self, data: str) -> None:
+        if self._in_count:
+            self.errata_count += data
+            self._in_count = False
+
+
+def parse(html: str) -> Page:
+    page = Page()
+    page.feed(html)
+    page.close()
+    return page
+
+
+@pytest.fixture(scope="session")
+def page(report_dir: Path) -> Page:
+    return parse((report_dir / "index.html").read_text(encoding="utf-8"))
+
+
+def test_the_three_files_are_written(report_dir: Path) -> None:
+    names = {p.name for p in report_dir.iterdir()} - {"screenshot.png"}  # the browser test's
+    assert sorted(names) == ["claims.json", "errata.csv", "index.html"]
+
+
+def test_the_page_parses_and_nests(page: Page) -> None:
+    assert page.problems == []
+    assert page.stack == []
+
+
+def test_every_claim_appears_once(page: Page, evaluation: Evaluation) -> None:
+    assert sorted(page.claim_rows) == sorted(c.id for c in evaluation)
+    assert len(page.claim_rows) == len(set(page.claim_rows))
+
+
+def test_ids_are_unique_even_across_figures(page: Page) -> None:
+    duplicated = {i for i in page.ids if page.ids.count(i) > 1}
+    assert not duplicated
+
+
+def test_sections_come_in_order(page: Page) -> None:
+    assert [s for s in page.sections if s in SECTIONS] == SECTIONS
+
+
+def test_errata_counts_agree(report_dir: Path, page: Page, evaluation: Evaluation) -> None:
+    expected = sum(c.verdict == "erratum" for c in evaluation)
+    rows = list(csv.DictReader(io.StringIO((report_dir / "errata.csv").read_text("utf-8"))))
+    data = json.loads((report_dir / "claims.json").read_text("utf-8"))
+    in_json = sum(c["verdict"] == "erratum" for c in data["claims"])
+    assert int(page.errata_count) == page.errata_articles == len(rows) == in_json == expected
+    assert data["meta"]["errata"] == expected
+
+
+def test_csv_columns_and_json_fields(report_dir: Path, evaluation: Evaluation) -> None:
+    header = (report_dir / "errata.csv").read_text("utf-8").splitlines()[0]
+    assert tuple(header.split(",")) == ERRATA_COLUMNS
+    data = json.loads((report_dir / "claims.json").read_text("utf-8"))
+    assert set(data) == {"meta", "claims"}
+    assert [c["id"] for c in data["claims"]] == [c.id for c in evaluation]
+    assert data["meta"]["book"]["sha256"] == evaluation.book.identity.sha256
+
+
+def test_two_runs_give_identical_csv_and_json(report_dir: Path, book: Book, tmp_path: Path) -> None:
+    again = tmp_path / "again"
+    assert main(["report", "--book", str(book.path), "--out", str(again)]) == 0
+    for name in ("claims.json", "errata.csv"):
+        assert (again / name).read_bytes() == (report_dir / name).read_bytes(), name
+
+
+def test_quoted_text_is_escaped(evaluation: Evaluation, catalog: Catalog, book: Book) -> None:
+    hostile = "<script>alert(1)</script>"
+    claims = tuple(
+        dataclasses.replace(c, quote=hostile, quantity=hostile, verdict="erratum") if i == 0 else c
+        for i, c in enumerate(evaluation)
+    )
+    spoilt = dataclasses.replace(evaluation, claims=claims)
+    keys = tuple(c.key for c in book.identity.chapters)
+    html = render_page(spoilt, scan(book, catalog, keys), catalog, None)
+    assert hostile not in html
+    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in html
+    assert parse(html).scripts == 1  # the page's own small script, nothing else
+
+
+def test_properties_are_shown_when_present(
+    evaluation: Evaluation, catalog: Catalog, book: Book, tmp_path: Path
+) -> None:
+    results = {
+        "date": "2026-11-22T00:00:00Z",
+        "profile": "ci",
+        "invariants": [
+            {
+                "name": "momentum",
+                "law": "P is conserved",
+                "reference": "(2.1)",
+                "examples": 100,
+                "worst_error": 1e-16,
+                "outcome": "passed",
+            }
+        ],
+    }
+    path = tmp_path / "properties.json"
+    path.write_text(json.dumps(results), encoding="utf-8")
+    keys = tuple(c.key for c in book.identity.chapters)
+    html = render_page(evaluation, scan(book, catalog, keys), catalog, path)
+    assert 'id="properties"' in html
+    assert "P is conserved" in html
+    assert 'id="properties"' not in render_page(
+        evaluation, scan(book, catalog, keys), catalog, tmp_path / "absent.json"
+    )
+
+
+def test_rounding_shows_its_reason(page: Page, report_dir: Path, evaluation: Evaluation) -> None:
+    html = (report_dir / "index.html").read_text("utf-8")
+    for c in evaluation:
+        if c.verdict == "rounding":
+            row = re.search(
+                rf'<tr class="claim" data-verdict="rounding" id="claim-{re.escape(c.id)}">'
+                r"(.*?)</tr>",
+                html,
+                re.S,
+            )
+            assert row, c.id
+            assert f"rounding ({c.rounding_reason})" in row.group(1)
+
+
+def test_the_page_is_self_contained(report_dir: Path) -> None:
+    html = (report_dir / "index.html").read_text("utf-8")
+    assert not re.search(r"<(link|script|img|iframe)\b[^>]*\b(href|src)=", html)
+    assert not re.search(
+        r"""(src|href)=["']?(https?:)?//|url\(\s*["']?(https?:)?//|@import""", html
+    )
+
+
+def test_write_is_atomic_and_keeps_properties(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "old.html").write_text("old", encoding="utf-8")
+    (out / "properties.json").write_text("{}", encoding="utf-8")
+    write_atomically(out, {"index.html": "new"})
+    assert sorted(p.name for p in out.iterdir()) == ["index.html", "properties.json"]
+
+    def refuse(self: Path, target: Path) -> None:
+        raise OSError("disk full")
+
+    monkeypatch.setattr(Path, "rename", refuse)
+    with pytest.raises(OSError, match="disk full"):
+        write_atomically(out, {"index.html": "newer"})
+    monkeypatch.undo()
+    assert (out / "index.html").read_text(encoding="utf-8") == "new"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # no staging left behind

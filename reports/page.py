@@ -1,0 +1,242 @@
+"""The errata report: ``index.html`` (one self-contained page), ``errata.csv`` and
+``claims.json`` (design section 4), built from the evaluated catalog and the scan.
+
+The page is rendered from jinja2 templates in ``reports/templates`` with autoescaping on, so
+everything it quotes from the book or the catalog shows as text.
+"""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from dataclasses import dataclass
+from importlib.metadata import PackageNotFoundError, version
+from pathlib import Path
+from typing import Any
+
+from jinja2 import Environment, PackageLoader, select_autoescape
+
+from reference.book import Book
+from reference.catalog import Catalog
+from reference.compare import VERDICTS
+from reference.evaluation import EvaluatedClaim, Evaluation
+from reference.locate import matches, pick_occurrence
+from reference.scan import ScanResult
+from reference.tokens import tokenize_line
+from reports.figures import render_all, verdict_chart
+from reports.output import claims_json, errata_csv
+
+EXAMPLES_PER_RULE = 3
+
+
+def bangcheck_version() -> str:
+    """The installed bangcheck version."""
+    try:
+        return version("bangcheck")
+    except PackageNotFoundError:  # pragma: no cover - running from an uninstalled tree
+        return "unknown"
+
+
+@dataclass(frozen=True)
+class Quote:
+    """A quote split around the claimed number, so that the page can highlight it."""
+
+    before: str
+    number: str
+    after: str
+
+
+def quote_parts(book: Book, claim: EvaluatedClaim) -> Quote:
+    """The claim's quote with the printed number at its occurrence picked out."""
+    text = book.line(claim.line)
+    start = text.find(claim.quote)
+    if start < 0:
+        return Quote(claim.quote, "", "")
+    found = matches(text, tokenize_line(text, claim.line), claim.printed)
+    match, _ = pick_occurrence(found, claim.occurrence)
+    if match is None or not start <= match.start <= match.end <= start + len(claim.quote):
+        return Quote(claim.quote, "", "")
+    a, b = match.start - start, match.end - start
+    return Quote(claim.quote[:a], claim.quote[a:b], claim.quote[b:])
+
+
+def _format_arg(value: Any, values: dict[str, EvaluatedClaim]) -> str:
+    if isinstance(value, dict) and set(value) == {"claim"}:
+        ref = values.get(value["claim"])
+        shown = ref.printed if ref else "?"
+        return f"{value['claim']} = {shown}"
+    if isinstance(value, list):
+        return "[" + ", ".join(_format_arg(v, values) for v in value) + "]"
+    return repr(value) if isinstance(value, str) else str(value)
+
+
+def model_call(claim: EvaluatedClaim, values: dict[str, EvaluatedClaim]) -> str:
+    """How the model was called: ``module.function(arg=value, ...)`` and the pick."""
+    if claim.restates:
+        return f"restates {claim.restates}"
+    if not claim.model:
+        return ""
+    args = ", ".join(f"{k}={_format_arg(v, values)}" for k, v in claim.args.items())
+    extra = ", ".join(f"{k}={v!r}" for k, v in claim.assumptions.items())
+    call = f"{claim.model}({', '.join(x for x in (args, extra) if x)})"
+    return f"{call}.{claim.pick}" if claim.pick else call
+
+
+def _errata_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
+    rows = []
+    for c in evaluation:
+        if c.verdict != "erratum":
+            continue
+        diagnosis = c.diagnosis or {}
+        rows.append(
+            {
+                "id": c.id,
+                "chapter": c.chapter,
+                "line": c.line,
+                "quantity": c.quantity,
+                "printed": c.printed,
+                "correct": c.correct,
+                "model_value": c.model_value,
+                "diagnosis_kind": diagnosis.get("kind"),
+                "diagnosis_auto": diagnosis.get("auto"),
+                "note": diagnosis.get("note"),
+                "quote": c.quote,
+            }
+        )
+    return rows
+
+
+def _coverage(scan: ScanResult) -> list[dict[str, Any]]:
+    out = []
+    for key, c in scan.chapters.items():
+        done = c.catalogued + c.excluded_rule + c.excluded_hand
+        out.append(
+            {
+                "chapter": key,
+                "tokens": c.tokens,
+                "catalogued": c.catalogued,
+                "excluded_rule": c.excluded_rule,
+                "excluded_hand": c.excluded_hand,
+                "missing": c.missing,
+                "percent": round(100 * done / c.tokens, 1) if c.tokens else 100.0,
+            }
+        )
+    return out
+
+
+def _exclusion_examples(book: Book, scan: ScanResult) -> dict[str, list[dict[str, Any]]]:
+    per_chapter: dict[str, dict[str, dict[str, Any]]] = {}
+    for tok in scan.tokens:
+        if tok.status != "excluded":
+            continue
+        name = f"hand: {tok.by}" if tok.hand else tok.by or ""
+        group = per_chapter.setdefault(tok.chapter, {}).setdefault(
+            name, {"name": name, "count": 0, "examples": []}
+        )
+        group["count"] += 1
+        if len(group["examples"]) < EXAMPLES_PER_RULE:
+            text = book.line(tok.line)
+            context = text[max(0, tok.start - 30) : tok.end + 30].strip()
+            group["examples"].append({"line": tok.line, "token": tok.text, "context": context})
+    return {
+        chapter: sorted(groups.values(), key=lambda g: (-g["count"], g["name"]))
+        for chapter, groups in per_chapter.items()
+    }
+
+
+def _meta(evaluation: Evaluation, scan: ScanResult) -> dict[str, Any]:
+    counts = evaluation.verdict_counts()
+    return {
+        "bangcheck": bangcheck_version(),
+        "book": {
+            "title": evaluation.book.identity.title,
+            "sha256": evaluation.book.identity.sha256,
+            "lines": evaluation.book.identity.lines,
+        },
+        "claims": len(evaluation),
+        "verdicts": {v: counts[v] for v in VERDICTS},
+        "errata": counts["erratum"],
+        "coverage": {row["chapter"]: row for row in _coverage(scan)},
+    }
+
+
+def _properties(path: Path | None) -> dict[str, Any] | None:
+    if path is None or not path.is_file():
+        return None
+    return json.loads(path.read_text(encoding="utf-8"))
+
+
+def _environment() -> Environment:
+    return Environment(
+        loader=PackageLoader("reports", "templates"),
+        autoescape=select_autoescape(enabled_extensions=("html", "j2"), default=True),
+        trim_blocks=True,
+        lstrip_blocks=True,
+    )
+
+
+def render_page(
+    evaluation: Evaluation, scan: ScanResult, catalog: Catalog, properties: Path | None
+) -> str:
+    """The report page as one HTML string."""
+    book = evaluation.book
+    values = evaluation.by_id()
+    titles = {c.key: c.title for c in book.identity.chapters}
+    chapters = []
+    for key, title in titles.items():
+        rows = [c for c in evaluation if c.chapter == key]
+        if rows:
+            chapters.append({"key": key, "title": title, "claims": rows})
+    per_chapter = {
+        key: Counter(c.verdict for c in evaluation if c.chapter == key)
+        for key in titles
+        if any(c.chapter == key for c in evaluation)
+    }
+    errata = [
+        {
+            "claim": c,
+            "quote": quote_parts(book, c),
+            "difference": None
+            if c.value is None or not isinstance(c.model_value, float | int)
+            else c.value - c.model_value,
+            "call": model_call(c, values),
+        }
+        for c in evaluation
+        if c.verdict == "erratum"
+    ]
+    slips = [s for f in catalog.files for s in f.slips]
+    template = _environment().get_template("index.html.j2")
+    return template.render(
+        meta=_meta(evaluation, scan),
+        verdicts=VERDICTS,
+        present=[v for v in VERDICTS if any(c.verdict == v for c in evaluation)],
+        per_chapter=per_chapter,
+        titles=titles,
+        chart=verdict_chart({k: dict(v) for k, v in per_chapter.items()}, VERDICTS),
+        coverage=_coverage(scan),
+        errata=errata,
+        chapters=chapters,
+        figures=render_all(evaluation),
+        unmodeled=[c for c in evaluation if c.verdict == "unmodeled"],
+        properties=_properties(properties),
+        slips=slips,
+        assumptions=[c for c in evaluation if c.assumptions],
+        tolerances=[
+            c
+            for c in evaluation
+            if c.relation != "=" or c.sigfigs is not None or c.rel_tol is not None
+        ],
+        exclusions=_exclusion_examples(book, scan),
+        calls={c.id: model_call(c, values) for c in evaluation},
+    )
+
+
+def build_report(
+    evaluation: Evaluation, scan: ScanResult, catalog: Catalog, properties: Path | None
+) -> dict[str, str]:
+    """The report's files by name: ``index.html``, ``errata.csv``, ``claims.json``."""
+    return {
+        "index.html": render_page(evaluation, scan, catalog, properties),
+        "errata.csv": errata_csv(_errata_rows(evaluation)),
+        "claims.json": claims_json(_meta(evaluation, scan), [c.to_json() for c in evaluation]),
+    }
