@@ -203,6 +203,15 @@ def _report(args: argparse.Namespace) -> int:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run ``bangcheck``; returns the exit status."""
+    try:
+        return _run(argv)
+    except BrokenPipeError:
+        # the reader went away (``bangcheck scan | head``): stop quietly, as Unix tools do
+        sys.stderr.close()
+        return EXIT_OK
+
+
+def _run(argv: Sequence[str] | None) -> int:
     parser = _parser()
     args = parser.parse_args(argv)
     try:

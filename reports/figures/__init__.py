@@ -1,0 +1,163 @@
+"""The report's figures, drawn by calling mechmodel with the catalog's own inputs.
+
+Each figure is one small function registered with ``@figure`` in the module of its chapter
+(``reports/figures/chNN.py``): it gets the evaluated claims (to read the book's givens and to name
+the claims it illustrates) and a matplotlib ``Figure`` to draw on. ``render_all`` imports every
+chapter module and returns each figure as inline SVG, deterministic (no date, one
+``svg.hashsalt`` per figure, every SVG id prefixed with the figure's key so ids never clash
+within one page). Adding a figure is one decorated function.
+"""
+
+from __future__ import annotations
+
+import importlib
+import io
+import math
+import pkgutil
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from reference.evaluation import EvaluatedClaim, Evaluation
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """A registered figure: the book's figure it redraws, a caption and the claims it shows."""
+
+    key: str
+    book_figure: str
+    caption: str
+    claims: tuple[str, ...]
+    draw: Callable[[Figure, dict[str, EvaluatedClaim]], None]
+    module: str
+
+
+@dataclass(frozen=True)
+class RenderedFigure:
+    """A figure ready for the page."""
+
+    key: str
+    book_figure: str
+    caption: str
+    claims: tuple[str, ...]
+    svg: str
+
+
+FIGURES: list[FigureSpec] = []
+
+
+def value_of(claims: dict[str, EvaluatedClaim], ident: str) -> float:
+    """The value a claim states (its printed number, or ``means``): the book's own input."""
+    value = claims[ident].value
+    if value is None:
+        raise ValueError(f"claim {ident} has no numeric value to draw with")
+    return value
+
+
+def ellipse_points(semi_x: float, semi_y: float, n: int = 361) -> tuple[list[float], list[float]]:
+    """Points of the axis-aligned ellipse (x/a)^2 + (y/b)^2 = 1, for plotting."""
+    angles = [2 * math.pi * k / (n - 1) for k in range(n)]
+    return [semi_x * math.cos(a) for a in angles], [semi_y * math.sin(a) for a in angles]
+
+
+def figure(key: str, book_figure: str, caption: str, claims: tuple[str, ...]) -> Callable:
+    """Register a drawing function as a report figure."""
+
+    def register(draw: Callable[[Figure, dict[str, EvaluatedClaim]], None]) -> Callable:
+        if any(f.key == key for f in FIGURES):
+            raise ValueError(f"two figures with the key {key!r}")
+        FIGURES.append(FigureSpec(key, book_figure, caption, claims, draw, draw.__module__))
+        return draw
+
+    return register
+
+
+def _value(claims: dict[str, EvaluatedClaim], ident: str) -> float:
+    value = claims[ident].value
+    assert value is not None, ident
+    return value
+
+
+_SVG_ID = re.compile(r'id="([^"]+)"')
+_METADATA = re.compile(r"<metadata>.*?</metadata>\s*", re.S)
+
+
+def _svg(fig: Figure, key: str) -> str:
+    """The figure as inline SVG: no date or RDF metadata, every id prefixed with ``key``."""
+    import matplotlib
+
+    buffer = io.StringIO()
+    with matplotlib.rc_context({"svg.hashsalt": f"bangcheck-{key}", "svg.fonttype": "none"}):
+        fig.savefig(buffer, format="svg", metadata={"Date": None}, bbox_inches="tight")
+    text = buffer.getvalue()
+    text = _METADATA.sub("", text[text.index("<svg") :])
+    # matplotlib names its elements axes_1, line2d_1, ... in every figure: make them unique
+    for ident in set(_SVG_ID.findall(text)):
+        new = f"{key}-{ident}"
+        text = text.replace(f'id="{ident}"', f'id="{new}"')
+        text = text.replace(f"#{ident})", f"#{new})").replace(f'"#{ident}"', f'"#{new}"')
+    return text
+
+
+def _register_all() -> None:
+    for module in pkgutil.iter_modules(__path__):
+        importlib.import_module(f"{__name__}.{module.name}")
+
+
+def render_all(evaluation: Evaluation) -> list[RenderedFigure]:
+    """Every registered figure as inline SVG, in chapter order."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    _register_all()
+    claims = evaluation.by_id()
+    out = []
+    for spec in sorted(FIGURES, key=lambda f: f.module):
+        missing = [c for c in spec.claims if c not in claims]
+        if missing:
+            raise KeyError(f"figure {spec.key} illustrates unknown claims {missing}")
+        fig = Figure(figsize=(6.4, 4.2))
+        spec.draw(fig, claims)
+        out.append(
+            RenderedFigure(
+                spec.key, spec.book_figure, spec.caption, spec.claims, _svg(fig, spec.key)
+            )
+        )
+    return out
+
+
+def verdict_chart(counts: dict[str, dict[str, int]], verdicts: tuple[str, ...]) -> str:
+    """A small stacked bar chart of claims per chapter by verdict, as inline SVG."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(6.4, 2.4))
+    ax = fig.add_subplot()
+    chapters = list(counts)
+    bottom = [0] * len(chapters)
+    colours = {
+        "verified": "#2e7d32",
+        "rounding": "#f9a825",
+        "erratum": "#c62828",
+        "given": "#90a4ae",
+        "unmodeled": "#6a1b9a",
+        "indeterminate": "#000000",
+    }
+    for verdict in verdicts:
+        heights = [counts[c].get(verdict, 0) for c in chapters]
+        if any(heights):
+            ax.bar(chapters, heights, bottom=bottom, label=verdict, color=colours.get(verdict))
+            bottom = [b + h for b, h in zip(bottom, heights, strict=True)]
+    ax.set_xlabel("chapter")
+    ax.set_ylabel("claims")
+    ax.legend(fontsize="x-small", ncols=3)
+    return _svg(fig, "verdict-chart")

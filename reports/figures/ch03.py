@@ -1,0 +1,53 @@
+"""Figures of chapter 3, redrawn from the model (see ``reports.figures``)."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from mechmodel.collisions import collide, kinetic_energy
+from reports.figures import ellipse_points, figure, value_of
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from reference.evaluation import EvaluatedClaim
+
+
+@figure(
+    "energy-ellipses",
+    "Fig. 3.1",
+    "The SUV/VW crash in the (V_SUV, V_VW) plane: the elastic KE ellipse through the initial "
+    "point, the inelastic IE ellipse through the COM point, and the momentum line that both "
+    "collisions stay on.",
+    ("ch03.suv-vw.ke", "ch03.suv-vw.ie"),
+)
+def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    m_suv, m_vw = value_of(claims, "ch03.suv-vw.m-suv"), value_of(claims, "ch03.suv-vw.m-vw")
+    v_suv, v_vw = value_of(claims, "ch03.suv-vw.v-suv"), value_of(claims, "ch03.suv-vw.v-vw")
+    elastic = collide(m_suv, m_vw, v_suv, v_vw, 1)
+    sticking = collide(m_suv, m_vw, v_suv, v_vw, 0)
+    ax = fig.add_subplot()
+    for energy, style, label in (
+        (kinetic_energy((m_suv, m_vw), (v_suv, v_vw)), "-", "KE ellipse"),
+        (sticking.ke_after, "--", "IE ellipse"),
+    ):
+        # 1/2 M x^2 + 1/2 m y^2 = E has semi-axes sqrt(2E/M) and sqrt(2E/m)
+        xs, ys = ellipse_points(math.sqrt(2 * energy / m_suv), math.sqrt(2 * energy / m_vw))
+        ax.plot(xs, ys, style, label=f"{label} (E = {energy:g})")
+    p = elastic.momentum
+    line_x = [-20.0, 100.0]
+    ax.plot(line_x, [(p - m_suv * x) / m_vw for x in line_x], ":", label="momentum line")
+    for (x, y), name in (
+        ((v_suv, v_vw), "IN"),
+        (elastic.after, "FIN (elastic)"),
+        (sticking.after, "COM (inelastic)"),
+    ):
+        ax.plot([x], [y], "o")
+        ax.annotate(f"{name} ({x:g}, {y:g})", (x, y), textcoords="offset points", xytext=(5, 5))
+    ax.set_xlabel("V_SUV")
+    ax.set_ylabel("V_VW")
+    ax.set_aspect("equal")
+    ax.set_xlim(-70, 110)
+    ax.set_ylim(-130, 130)
+    ax.legend(loc="lower left", fontsize="small")
