@@ -8,6 +8,8 @@ and the verdict summary.
 - Hypothesis profiles ``ci`` (the default when ``CI=true``), ``dev`` (the default otherwise) and
   ``thorough``; choose with ``--hypothesis-profile``.
 - The terminal summary ends with the verdict counts, just before pytest's final line.
+- The property tests' invariants are recorded in ``reports/out/properties.json`` for the report
+  (``checks/properties/recorder.py``).
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from typing import Any
 import pytest
 from hypothesis import settings
 
+from checks.properties.recorder import InvariantRecorder
 from reference.book import Book, BookError, book_path, load_book
 from reference.catalog import Catalog
 from reference.compare import VERDICTS
@@ -62,6 +65,7 @@ def _load_book(config: pytest.Config) -> Book | None:
 
 
 def pytest_configure(config: pytest.Config) -> None:
+    config.pluginmanager.register(InvariantRecorder(config), "bangcheck-invariants")
     book = _load_book(config)
     config.stash[_BOOK] = book
     try:
