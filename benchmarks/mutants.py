@@ -1,0 +1,206 @@
+"""Mutation run: does the test suite notice when mechmodel is wrong?
+
+Copies the project into a temporary directory, changes one small thing in one mechmodel module at
+a time (swap + and -, * and /, flip a comparison, flip a sign, nudge a constant, drop a factor 2,
+swap two returned values), and runs the tests that exercise mechmodel (the claim tests, the
+property suite, the input and sensitivity tests) against the copy with a per-mutant timeout. A
+mutant is killed when the tests fail. Before the sample it checks that the unmutated copy passes
+and that a mutant that must be killed is killed (so the tests really import the copy).
+
+    python benchmarks/mutants.py [--count 150] [--seed 0] [--timeout 120] [--book PATH]
+
+Not part of the default test run.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import os
+import random
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+TREE = ("mechmodel", "reference", "reports", "checks", "conftest.py", "pyproject.toml")
+TESTS = (
+    "checks/test_claims.py",
+    "checks/properties",
+    "checks/test_mechmodel_inputs.py",
+    "checks/test_sensitivity.py",
+)
+SWAPS = {
+    ast.Add: ast.Sub, ast.Sub: ast.Add, ast.Mult: ast.Div, ast.Div: ast.Mult,
+    ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt,
+}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class Mutant:
+    """One change: the file, the line, what kind, and which site of that kind in the file."""
+
+    path: str
+    line: int
+    kind: str
+    index: int
+
+    def __str__(self) -> str:
+        return f"{self.path}:{self.line} {self.kind}"
+
+
+def _sites(tree: ast.AST) -> Iterator[tuple[str, ast.AST]]:
+    for node in ast.walk(tree):
+        if isinstance(node, ast.BinOp) and type(node.op) in SWAPS:
+            yield f"swap {type(node.op).__name__}", node
+            for side in (node.left, node.right):
+                if isinstance(side, ast.Constant) and side.value == 2:
+                    yield "drop factor 2", node
+        elif isinstance(node, ast.Compare) and type(node.ops[0]) in SWAPS:
+            yield f"flip {type(node.ops[0]).__name__}", node
+        elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            yield "drop minus", node
+        elif (
+            isinstance(node, ast.Constant)
+            and type(node.value) in (int, float)
+            and not isinstance(node.value, bool)
+        ):
+            yield "nudge constant", node
+        elif (
+            isinstance(node, ast.Return)
+            and isinstance(node.value, ast.Tuple)
+            and len(node.value.elts) >= 2
+        ):
+            yield "swap returned values", node
+
+
+def _mutate(kind: str, node: ast.AST) -> ast.AST:
+    if kind.startswith("swap") and isinstance(node, ast.BinOp):
+        return ast.BinOp(node.left, SWAPS[type(node.op)](), node.right)
+    if kind == "drop factor 2" and isinstance(node, ast.BinOp):
+        left_two = isinstance(node.left, ast.Constant) and node.left.value == 2
+        return node.right if left_two else node.left
+    if kind.startswith("flip") and isinstance(node, ast.Compare):
+        return ast.Compare(node.left, [SWAPS[type(node.ops[0])](), *node.ops[1:]], node.comparators)
+    if kind == "drop minus" and isinstance(node, ast.UnaryOp):
+        return node.operand
+    if kind == "nudge constant" and isinstance(node, ast.Constant):
+        return ast.Constant(node.value + 1 if isinstance(node.value, int) else node.value * 1.01)
+    if kind == "swap returned values" and isinstance(node, ast.Return):
+        elts = list(node.value.elts)  # type: ignore[union-attr]
+        elts[0], elts[1] = elts[1], elts[0]
+        return ast.Return(ast.Tuple(elts, ast.Load()))
+    raise ValueError(kind)
+
+
+def enumerate_mutants(root: Path) -> list[Mutant]:
+    out = []
+    for path in sorted((root / "mechmodel").glob("*.py")):
+        if path.name == "__init__.py":
+            continue
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        counts: dict[str, int] = {}
+        for kind, node in _sites(tree):
+            index = counts.get(kind, 0)
+            counts[kind] = index + 1
+            out.append(Mutant(str(path.relative_to(root)), getattr(node, "lineno", 0), kind, index))
+    return out
+
+
+def apply(root: Path, mutant: Mutant, source: str) -> None:
+    tree = ast.parse(source)
+    nodes = [n for k, n in _sites(tree) if k == mutant.kind]
+    target = nodes[mutant.index]
+    replacement = _mutate(mutant.kind, target)
+    for parent in ast.walk(tree):
+        for name, value in ast.iter_fields(parent):
+            if value is target:
+                setattr(parent, name, replacement)
+            elif isinstance(value, list) and any(v is target for v in value):
+                setattr(parent, name, [replacement if v is target else v for v in value])
+    (root / mutant.path).write_text(ast.unparse(ast.fix_missing_locations(tree)) + "\n")
+
+
+def run_tests(root: Path, book: str, timeout: float) -> str:
+    env = {**os.environ, "CI": "true", "BANGCHECK_BOOK": book, "PYTHONDONTWRITEBYTECODE": "1"}
+    command = [
+        sys.executable,
+        "-m",
+        "pytest",
+        "-x",
+        "-q",
+        "-p",
+        "no:cacheprovider",
+        f"--book={book}",
+        *TESTS,
+    ]
+    try:
+        done = subprocess.run(
+            command, cwd=root, env=env, capture_output=True, timeout=timeout, check=False
+        )
+    except subprocess.TimeoutExpired:
+        return "timeout"
+    return "survived" if done.returncode == 0 else "killed"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--count", type=int, default=150)
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--timeout", type=float, default=120)
+    parser.add_argument("--book", default=os.environ.get("BANGCHECK_BOOK"))
+    args = parser.parse_args()
+    if not args.book:
+        sys.exit("give --book PATH or set BANGCHECK_BOOK")
+    book = str(Path(args.book).resolve())
+    with tempfile.TemporaryDirectory(prefix="bangcheck-mutants-") as tmp:
+        root = Path(tmp)
+        for name in TREE:
+            source = ROOT / name
+            if source.is_dir():
+                shutil.copytree(
+                    source, root / name, ignore=shutil.ignore_patterns("__pycache__", "out")
+                )
+            else:
+                shutil.copy2(source, root / name)
+        if run_tests(root, book, args.timeout) != "survived":
+            sys.exit("the unmutated copy fails its tests: fix that first")
+        sanity = Mutant("mechmodel/collisions.py", 0, "swap Add", 0)
+        original = (root / sanity.path).read_text(encoding="utf-8")
+        apply(root, sanity, original)
+        outcome = run_tests(root, book, args.timeout)
+        (root / sanity.path).write_text(original, encoding="utf-8")
+        if outcome != "killed":
+            sys.exit("the sanity mutant survived: are the tests importing the copy?")
+        mutants = enumerate_mutants(root)
+        sample = random.Random(args.seed).sample(mutants, min(args.count, len(mutants)))
+        print(f"{len(mutants)} mutation sites; sample of {len(sample)} (seed {args.seed})")
+        tally: dict[str, int] = {}
+        survivors = []
+        start = time.perf_counter()
+        for i, mutant in enumerate(sample, start=1):
+            path = root / mutant.path
+            original = path.read_text(encoding="utf-8")
+            apply(root, mutant, original)
+            outcome = run_tests(root, book, args.timeout)
+            path.write_text(original, encoding="utf-8")
+            tally[outcome] = tally.get(outcome, 0) + 1
+            if outcome == "survived":
+                survivors.append(mutant)
+            print(f"[{i}/{len(sample)}] {outcome:<8} {mutant}", file=sys.stderr)
+        killed = tally.get("killed", 0) + tally.get("timeout", 0)
+        print(
+            f"killed {killed} of {len(sample)} ({100 * killed / len(sample):.1f}%): "
+            f"{tally}; {time.perf_counter() - start:.0f} s"
+        )
+        for mutant in survivors:
+            print(f"survived: {mutant}")
+
+
+if __name__ == "__main__":
+    main()
