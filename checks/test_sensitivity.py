@@ -44,6 +44,7 @@ def test_models_move_with_their_inputs(catalog: Catalog) -> None:
     for claim in claims:
         assert claim.model is not None
         args, inputs = build_args(claim.args, lambda ident: (by_id[ident], parsed(by_id[ident])))
+        args.update(claim.assumptions)
         base = exact(cache.picked(claim.id, claim.model, args, claim.pick))
         moved = False
         for item in inputs:

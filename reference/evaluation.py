@@ -291,6 +291,8 @@ class _Evaluator:
         current = editions[0]
         extra = Fraction(2 * current.uncertainty / factor)
         value = current.value / factor
+        if claim.relation != "=":
+            return self._judge_real(claim, printed, exact(value), None), value, None
         judgement = judge_equal(printed, exact(value), extra=extra)
         auto = None
         if judgement.verdict == "erratum":

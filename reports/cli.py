@@ -156,8 +156,8 @@ def _print_scan(result: ScanResult, book_lines: Sequence[str], list_missing: boo
     reasons = sorted({r for c in result.chapters.values() for r in c.reasons})
     for reason in reasons:
         per_chapter = " ".join(f"{c.reasons[reason]:>5}" for c in result.chapters.values())
-        total = sum(c.reasons[reason] for c in result.chapters.values())
-        print(f"  {'hand: ' + reason:<18} {total:>6}  {per_chapter}")
+        count = sum(c.reasons[reason] for c in result.chapters.values())
+        print(f"  {'hand: ' + reason:<18} {count:>6}  {per_chapter}")
     if list_missing:
         print("\nmissing tokens:")
         for t in result.missing:
