@@ -44,3 +44,342 @@ def fraction_velocities() -> st.SearchStrategy[Fraction]:
 def fraction_restitutions() -> st.SearchStrategy[Fraction]:
     """An exact restitution coefficient in [0, 1]."""
     return st.fractions(min_value=0, max_value=1, max_denominator=100)
+
+
+# --- slope geometry and trigonometry (mechmodel.geometry, chapter 1) -------------------------
+ANGLE_MARGIN = 0.01  # radians kept away from the zeros of sin and cos
+
+
+def angles() -> st.SearchStrategy[float]:
+    """Any angle from -4π to 4π radians (two turns either way)."""
+    return st.floats(min_value=-4 * 3.141592653589793, max_value=4 * 3.141592653589793)
+
+
+def oblique_angles() -> st.SearchStrategy[float]:
+    """An angle at least ANGLE_MARGIN away from every multiple of π/2, built as a whole number
+    of quarter turns (-8 to 7) plus an offset, so that all six trigonometric segments are
+    finite."""
+    quarter = 3.141592653589793 / 2
+    return st.tuples(
+        st.integers(min_value=-8, max_value=7),
+        st.floats(min_value=ANGLE_MARGIN, max_value=quarter - ANGLE_MARGIN),
+    ).map(lambda kd: kd[0] * quarter + kd[1])
+
+
+def acute_angles() -> st.SearchStrategy[float]:
+    """A slope angle strictly inside the first quadrant, ANGLE_MARGIN from its ends."""
+    return st.floats(min_value=ANGLE_MARGIN, max_value=3.141592653589793 / 2 - ANGLE_MARGIN)
+
+
+def unit_interval_values() -> st.SearchStrategy[float]:
+    """A value of sine or cosine: -1 to 1."""
+    return st.floats(min_value=-1.0, max_value=1.0)
+
+
+def slopes() -> st.SearchStrategy[float]:
+    """A slope Δy/Δx from -1e3 to 1e3."""
+    return st.floats(min_value=-1e3, max_value=1e3)
+
+
+def lengths() -> st.SearchStrategy[float]:
+    """A positive length (or scale factor) from 1e-3 to 1e3, spread evenly over the decades."""
+    return st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k)
+
+
+def secants() -> st.SearchStrategy[float]:
+    """A secant sec σ >= 1: the distance of a point outside the unit circle, 1 to 1e3."""
+    return st.floats(min_value=0, max_value=3).map(lambda k: 10.0**k)
+
+
+def fraction_lengths() -> st.SearchStrategy[Fraction]:
+    """An exact positive length (or speed, or scale factor) p/q."""
+    return st.fractions(min_value=Fraction(1, 1000), max_value=1000, max_denominator=1000)
+
+
+def fraction_slopes() -> st.SearchStrategy[Fraction]:
+    """An exact non-zero slope or speed p/q from -1000 to 1000."""
+    return st.fractions(min_value=-1000, max_value=1000, max_denominator=1000).filter(bool)
+
+
+def molecule_sizes() -> st.SearchStrategy[int]:
+    """Number of atoms N of a non-linear molecule, 3 to 1000."""
+    return st.integers(min_value=3, max_value=1000)
+
+
+# --- bangs and operators (chapters 4-5) ---------------------------------------------------------
+def moderate_fraction_masses() -> st.SearchStrategy[Fraction]:
+    """An exact mass p/q from 1/20 to 20: exact bang sequences and histories stay small."""
+    return st.fractions(min_value=Fraction(1, 20), max_value=20, max_denominator=20)
+
+
+def drop_speeds() -> st.SearchStrategy[Fraction]:
+    """An exact drop speed v0 > 0 of the X2 launcher, 1/10 to 10."""
+    return st.fractions(min_value=Fraction(1, 10), max_value=10, max_denominator=10)
+
+
+def mirror_angles() -> st.SearchStrategy[float]:
+    """An angle in radians from -3 to 3 (inside (-pi, pi)): a reflection's phi or a turn."""
+    return st.floats(min_value=-3.0, max_value=3.0, allow_nan=False)
+
+
+def square_roots() -> st.SearchStrategy[int]:
+    """A positive integer k, so that k^2 is a perfect-square mass (Fig. 5.2(f))."""
+    return st.integers(min_value=1, max_value=50)
+
+
+@st.composite
+def exact_histories(draw: st.DrawFn) -> dict[str, Fraction]:
+    """Arguments of bangs.bang_history: exact masses, 0 <= y1 <= y2 <= ceiling, velocities."""
+    ceiling = draw(st.fractions(min_value=1, max_value=10, max_denominator=10))
+    y2 = draw(st.fractions(min_value=0, max_value=ceiling, max_denominator=10))
+    y1 = draw(st.fractions(min_value=0, max_value=y2, max_denominator=10))
+    speeds = st.fractions(min_value=-5, max_value=5, max_denominator=10)
+    return {
+        "m1": draw(moderate_fraction_masses()),
+        "m2": draw(moderate_fraction_masses()),
+        "y1": y1,
+        "y2": y2,
+        "v1": draw(speeds),
+        "v2": draw(speeds),
+        "ceiling": ceiling,
+    }
+
+
+# --- common potential fields (mechmodel.fields, chapter 9) -------------------------------------
+def surface_gravities() -> st.SearchStrategy[float]:
+    """A planet's surface gravity g from 0.1 to 100 m/s^2, spread evenly over the decades."""
+    return st.floats(min_value=-1, max_value=2).map(lambda k: 10.0**k)
+
+
+def planet_radii() -> st.SearchStrategy[float]:
+    """A planet's radius from 1 km to 100,000 km, spread evenly over the decades."""
+    return st.floats(min_value=3, max_value=8).map(lambda k: 10.0**k)
+
+
+def chord_offsets() -> st.SearchStrategy[float]:
+    """Distance of a tunnel's chord from the centre, as a fraction of the radius (-0.99 to 0.99)."""
+    return st.floats(min_value=-0.99, max_value=0.99)
+
+
+def radial_fractions() -> st.SearchStrategy[float]:
+    """A distance from the centre in planet radii, 0 to 10 (inside and outside)."""
+    return st.floats(min_value=0.0, max_value=10.0)
+
+
+def oscillator_frequencies() -> st.SearchStrategy[float]:
+    """An angular frequency from 0.1 to 10 rad per unit time."""
+    return st.floats(min_value=-1, max_value=1).map(lambda k: 10.0**k)
+
+
+def oscillator_amplitudes() -> st.SearchStrategy[float]:
+    """An oscillation amplitude from -10 to 10 (a negative one is a half-period phase shift)."""
+    return st.floats(min_value=-10.0, max_value=10.0)
+
+
+def oscillator_times() -> st.SearchStrategy[float]:
+    """A time from 0 to 100 (up to some 160 periods at the highest frequency)."""
+    return st.floats(min_value=0.0, max_value=100.0)
+
+
+def fraction_coefficients() -> st.SearchStrategy[Fraction]:
+    """An exact positive coefficient p/q (of a parabola a x^2, or a planet's radius)."""
+    return st.fractions(min_value=Fraction(1, 100), max_value=100, max_denominator=100)
+
+
+def clock_sizes() -> st.SearchStrategy[int]:
+    """Hours on a phasor clock, 1 to 48."""
+    return st.integers(min_value=1, max_value=48)
+
+
+def clock_hours() -> st.SearchStrategy[int]:
+    """An hour or a lead on a clock, -100 to 100."""
+    return st.integers(min_value=-100, max_value=100)
+
+
+# --- chapter 10: series, binomials, phasors (mechmodel.series) --------------------------------
+
+SERIES_ARGUMENT_LIMIT = 10.0
+
+
+def series_arguments() -> st.SearchStrategy[float]:
+    """A real argument x (or w t) of the exponential, sine and cosine series, -10 to 10."""
+    return st.floats(
+        min_value=-SERIES_ARGUMENT_LIMIT, max_value=SERIES_ARGUMENT_LIMIT, allow_nan=False
+    )
+
+
+def series_orders() -> st.SearchStrategy[int]:
+    """A precision order o of a partial sum, 0 to 30."""
+    return st.integers(min_value=0, max_value=30)
+
+
+def binomial_powers() -> st.SearchStrategy[int]:
+    """A power n of (x + y)^n, a row of Pascal's triangle, 0 to 60."""
+    return st.integers(min_value=0, max_value=60)
+
+
+def phase_angles() -> st.SearchStrategy[float]:
+    """A phase angle in radians, -2 pi to 2 pi."""
+    return st.floats(min_value=-6.3, max_value=6.3, allow_nan=False)
+
+
+def compounding_periods() -> st.SearchStrategy[int]:
+    """A number m of compounding periods, 1 to 1e9, spread evenly over the decades."""
+    return st.floats(min_value=0, max_value=9, allow_nan=False).map(lambda k: int(10.0**k))
+
+
+def plane_points() -> st.SearchStrategy[tuple[float, float]]:
+    """A point (x, y) of the plane with coordinates from -1e3 to 1e3."""
+    coordinate = st.floats(min_value=-1e3, max_value=1e3, allow_nan=False)
+    return st.tuples(coordinate, coordinate)
+
+
+# --- complex fields (mechmodel.complexfields, chapter 10) -----------------------------------
+
+
+def small_fractions() -> st.SearchStrategy[Fraction]:
+    """An exact rational p/q with |p| <= 20 and 1 <= q <= 12."""
+    return st.builds(Fraction, st.integers(-20, 20), st.integers(1, 12))
+
+
+def gaussian_rationals() -> st.SearchStrategy[tuple[Fraction, Fraction]]:
+    """An exact complex number as (real part, imaginary part), both small rationals."""
+    return st.tuples(small_fractions(), small_fractions())
+
+
+def gaussian_integers() -> st.SearchStrategy[tuple[int, int]]:
+    """An exact complex number re + i im with integer parts from -9 to 9."""
+    return st.tuples(st.integers(-9, 9), st.integers(-9, 9))
+
+
+def xy_polynomials() -> st.SearchStrategy[dict[tuple[int, int], tuple[int, int]]]:
+    """A polynomial in x, y of degree at most 2 in each with Gaussian-integer coefficients:
+    {(i, j): (re, im)} for the term (re + i im) x^i y^j (zero terms included)."""
+    keys = [(i, j) for i in range(3) for j in range(3)]
+    return st.lists(st.integers(-9, 9), min_size=18, max_size=18).map(
+        lambda c: {k: (c[2 * n], c[2 * n + 1]) for n, k in enumerate(keys)}
+    )
+
+
+def analytic_polynomials() -> st.SearchStrategy[dict[int, tuple[int, int]]]:
+    """A polynomial in z alone, degree at most 4, with Gaussian-integer coefficients:
+    {k: (re, im)} for the term (re + i im) z^k."""
+    return st.lists(st.integers(-9, 9), min_size=10, max_size=10).map(
+        lambda c: {k: (c[2 * k], c[2 * k + 1]) for k in range(5)}
+    )
+
+
+def laurent_terms() -> st.SearchStrategy[list[tuple[float, float, int]]]:
+    """Terms (re, im, k) of a Laurent polynomial sum c_k z^k with powers -4 to 4."""
+    coefficient = st.floats(min_value=-5, max_value=5, allow_nan=False)
+    term = st.tuples(coefficient, coefficient, st.integers(-4, 4))
+    return st.lists(term, min_size=1, max_size=6)
+
+
+def loop_circles() -> st.SearchStrategy[tuple[float, float, float]]:
+    """A circle (centre x, centre y, radius) whose edge keeps at least a third of its radius
+    away from the origin: it either encloses the origin well or passes well clear of it."""
+
+    def build(parts: tuple[float, float, float, bool]) -> tuple[float, float, float]:
+        import math
+
+        radius, angle, fraction, enclose = parts
+        distance = fraction * radius * (0.6 if enclose else 1) + (0 if enclose else 1.4 * radius)
+        return (distance * math.cos(angle), distance * math.sin(angle), radius)
+
+    return st.tuples(
+        st.floats(min_value=0.2, max_value=5),
+        st.floats(min_value=-3.2, max_value=3.2),
+        st.floats(min_value=0, max_value=1),
+        st.booleans(),
+    ).map(build)
+
+
+def off_origin_points() -> st.SearchStrategy[complex]:
+    """A point z of the plane with 0.3 <= |z| <= 3 (away from the poles at the origin)."""
+
+    def build(parts: tuple[float, float]) -> complex:
+        import cmath
+
+        radius, angle = parts
+        return cmath.rect(radius, angle)
+
+    return st.tuples(
+        st.floats(min_value=0.3, max_value=3), st.floats(min_value=-3.1, max_value=3.1)
+    ).map(build)
+
+
+def field_powers() -> st.SearchStrategy[int]:
+    """An integer power n of a field z^n, -6 to 6."""
+    return st.integers(-6, 6)
+
+
+def multipole_orders() -> st.SearchStrategy[int]:
+    """The order k of a 2^k-pole, 0 to 6."""
+    return st.integers(0, 6)
+
+
+def sphere_angles() -> st.SearchStrategy[float]:
+    """A central angle theta of a point on the projection sphere, 0.05 to 3.09 rad (not the
+    poles)."""
+    return st.floats(min_value=0.05, max_value=3.09)
+
+
+def sphere_diameters() -> st.SearchStrategy[float]:
+    """A sphere diameter from 0.1 to 10."""
+    return st.floats(min_value=0.1, max_value=10)
+
+
+# --- chapters 6-8: force laws, contact geometry, soft collisions, towers ----------------------
+
+
+def gaps() -> st.SearchStrategy[float]:
+    """A gap Y between a ball and a wall (or a length), 0.1 to 10."""
+    return st.floats(min_value=0.1, max_value=10)
+
+
+def positive_quantities() -> st.SearchStrategy[float]:
+    """A positive mass, speed or force constant, 0.1 to 10, spread over the decades."""
+    return st.floats(min_value=-1, max_value=1).map(lambda k: 10.0**k)
+
+
+def fraction_quantities() -> st.SearchStrategy[Fraction]:
+    """An exact positive quantity p/q from 1/10 to 10."""
+    return st.fractions(min_value=Fraction(1, 10), max_value=10, max_denominator=12)
+
+
+def force_powers() -> st.SearchStrategy[float]:
+    """A power p of a force law F = k y^p, -4 to 4, kept away from the logarithmic p = -1."""
+    return st.one_of(
+        st.floats(min_value=-4, max_value=-1.05), st.floats(min_value=-0.95, max_value=4)
+    )
+
+
+def well_powers() -> st.SearchStrategy[float]:
+    """A power p of a symmetric well U = s |x|^p, 1.5 to 6."""
+    return st.floats(min_value=1.5, max_value=6)
+
+
+def contact_powers() -> st.SearchStrategy[float]:
+    """A power n of a soft contact force F = k y^n, 1 (linear) to 4 (the superball's quartic)."""
+    return st.floats(min_value=1, max_value=4)
+
+
+def soft_masses() -> st.SearchStrategy[float]:
+    """A ball's mass for the soft-collision integrator, 0.1 to 10 (mass ratios up to 100)."""
+    return st.floats(min_value=-1, max_value=1).map(lambda k: 10.0**k)
+
+
+def closing_speeds() -> st.SearchStrategy[float]:
+    """A closing speed of two balls, 0.1 to 10."""
+    return st.floats(min_value=-1, max_value=1).map(lambda k: 10.0**k)
+
+
+def fraction_tower_masses() -> st.SearchStrategy[list[Fraction]]:
+    """The exact masses of a tower of 1 to 6 balls, each 1/20 to 20 (any order)."""
+    return st.lists(moderate_fraction_masses(), min_size=1, max_size=6)
+
+
+def ball_counts() -> st.SearchStrategy[int]:
+    """A number of balls N of a tower or a column, 1 to 7."""
+    return st.integers(min_value=1, max_value=7)
