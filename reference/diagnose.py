@@ -80,11 +80,11 @@ def diagnose(printed: Printed, correct: Printed) -> AutoDiagnosis | None:
             return AutoDiagnosis("dropped-digit", f"digits {cd} printed as {pd}")
         if _one_deleted(pd, cd):
             return AutoDiagnosis("extra-digit", f"digits {cd} printed as {pd}")
-    tol = 2 * (_relative_width(printed) + _relative_width(correct)) + 1e-12
+    # the simple factor closest to the ratio, if the printed digits allow it
+    tol = _relative_width(printed) + _relative_width(correct) + 1e-12
     r = float(ratio)
-    for name, factor in _FACTORS:
-        if abs(r / factor - 1) <= tol:
-            return AutoDiagnosis("factor", f"printed = {name} x correct")
-        if abs(r / factor + 1) <= tol:
-            return AutoDiagnosis("factor", f"printed = -{name} x correct")
+    name, factor = min(_FACTORS, key=lambda f: abs(math.log(abs(r) / f[1])))
+    if abs(math.log(abs(r) / factor)) <= math.log1p(tol):
+        sign = "" if r > 0 else "-"
+        return AutoDiagnosis("factor", f"printed = {sign}{name} x correct")
     return None

@@ -104,7 +104,8 @@ def _claimed(book: Book, catalog: Catalog, conflicts: list[str]) -> dict[tuple[i
         for tok in match.tokens:
             mark(tok, claim.id)
         if claim.line_end is not None:
-            parts = {p for p in re.split(r"[/\s·⋅]+", normalize(claim.printed)) if p}
+            spelled = f"{claim.printed} {claim.means or ''}"
+            parts = {p for p in re.split(r"[/\s·⋅]+", normalize(spelled)) if p}
             for number in range(claim.line + 1, claim.line_end + 1):
                 for tok in tokenize_line(book.line(number), number):
                     if tok.norm in parts:

@@ -1,0 +1,190 @@
+"""Laws of bang sequences and space-time histories (mechmodel.bangs): chapters 4-5.
+
+Fraction inputs must give exact equality; floats are compared within 1e-9 of the magnitudes
+involved (a history compounds rounding over its bangs).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+from hypothesis import assume, example, given, target
+from hypothesis import strategies as st
+
+from checks.properties.strategies import (
+    drop_speeds,
+    exact_histories,
+    fraction_velocities,
+    masses,
+    moderate_fraction_masses,
+)
+from mechmodel.bangs import (
+    BALLS,
+    CEILING,
+    FLOOR,
+    bang_history,
+    bang_possible,
+    ceiling_bounce,
+    ceiling_sequence,
+    floor_bounce,
+    game_over_bang,
+    velocities_after_bang,
+    x2_full_transfer_ratio,
+    x2_launch,
+)
+from mechmodel.collisions import kinetic_energy, momentum
+from mechmodel.operators import bang_angle, rotation_picture_bang_count
+
+pytestmark = pytest.mark.properties
+REL = 1e-9
+HISTORY_BANGS = 12
+
+
+@given(fraction_velocities())
+def test_floor_and_ceiling_reverse_the_velocity(v: Fraction) -> None:
+    """An elastic bounce off the floor or the ceiling (an infinite mass) reverses the ball's
+    velocity and keeps its speed: (V1, V2) -> (-V1, V2) off the floor, (V1, -V2) off the
+    ceiling (p. 4.11, Fig. 4.7b)."""
+    assert floor_bounce(v) == -v
+    assert ceiling_bounce(v) == -v
+
+
+@given(moderate_fraction_masses(), moderate_fraction_masses(), drop_speeds())
+def test_x2_final_points_lie_on_the_45_degree_line(
+    m1: Fraction, m2: Fraction, v0: Fraction
+) -> None:
+    """Every elastic X2 final point has V2 - V1 = 2 V0 (the relative velocity reverses), so all
+    lie on the 45-degree line CPL of Fig. 4.5a, and the bang keeps the kinetic energy."""
+    launch = x2_launch(m1, m2, v0)
+    assert launch.v2 - launch.v1 == 2 * v0
+    assert m1 * launch.v1**2 + m2 * launch.v2**2 == (m1 + m2) * v0**2
+
+
+@given(drop_speeds())
+def test_x2_limits(v0: Fraction) -> None:
+    """An infinite mass ratio launches ball 2 at 3 V0, nine times the drop height (point I);
+    the ratio 3 stops ball 1 and gives ball 2 all the energy (point M of Fig. 4.5b)."""
+    inf = x2_launch(math.inf, 1, v0)
+    assert inf.speed_ratio == 3
+    assert inf.height_ratio == 9
+    ratio = x2_full_transfer_ratio(v0)
+    assert ratio == 3
+    full = x2_launch(Fraction(ratio), 1, v0)
+    assert full.v1 == 0
+    assert full.energy_transfer == 1
+
+
+@given(exact_histories())
+@example({"m1": 7, "m2": 1, "y1": 1, "y2": 3, "v1": -1, "v2": -1, "ceiling": 7})  # Fig. 4.7
+def test_every_bang_of_a_history_conserves_what_it_should(args: dict[str, Fraction]) -> None:
+    """Each bang of the independent collision model (Fig. 4.4-4.7): a ball bang keeps the total
+    momentum and kinetic energy exactly and happens where the balls meet; a floor or ceiling
+    bang reverses one ball's velocity where it touches, keeping every speed; time never runs
+    back and ball 1 stays below ball 2 (the triangle of Fig. 4.11)."""
+    m1, m2 = args["m1"], args["m2"]
+    history = bang_history(**{k: Fraction(v) for k, v in args.items()}, max_bangs=HISTORY_BANGS)
+    before = (args["v1"], args["v2"])
+    t = 0
+    for bang in history.bangs:
+        after = (bang.v1, bang.v2)
+        assert bang.time >= t
+        assert 0 <= bang.y1 <= bang.y2 <= args["ceiling"]
+        if bang.kind == BALLS:
+            assert bang.y1 == bang.y2
+            assert momentum((m1, m2), after) == momentum((m1, m2), before)
+            assert kinetic_energy((m1, m2), after) == kinetic_energy((m1, m2), before)
+        elif bang.kind == FLOOR:
+            assert bang.y1 == 0
+            assert after == (-before[0], before[1])
+        else:
+            assert bang.kind == CEILING
+            assert bang.y2 == args["ceiling"]
+            assert after == (before[0], -before[1])
+        before, t = after, bang.time
+
+
+@given(exact_histories())
+@example({"m1": 7, "m2": 1, "y1": 1, "y2": 3, "v1": -1, "v2": -1, "ceiling": 7})  # Fig. 4.7
+def test_exact_and_float_histories_agree(args: dict[str, Fraction]) -> None:
+    """The event-driven history is the same computed exactly (Fraction) and in floats, bang by
+    bang, up to the first near-tie of two bangs (where rounding may order them either way)."""
+    exact = bang_history(**{k: Fraction(v) for k, v in args.items()}, max_bangs=HISTORY_BANGS)
+    floats = bang_history(**{k: float(v) for k, v in args.items()}, max_bangs=HISTORY_BANGS)
+    scale = 1 + max(abs(float(v)) for v in args.values())
+    worst = 0.0
+    for k, (e, f) in enumerate(zip(exact.bangs, floats.bangs, strict=False)):
+        if k and e.time - exact.bangs[k - 1].time < REL * scale * (1 + float(e.time)):
+            break  # a near-tie: the float order may differ from here on
+        if k + 1 < exact.count and exact.bangs[k + 1].time - e.time < REL * scale * (
+            1 + float(e.time)
+        ):
+            break
+        assert f.kind == e.kind
+        for a, b in ((f.time, e.time), (f.y1, e.y1), (f.y2, e.y2), (f.v1, e.v1), (f.v2, e.v2)):
+            error = abs(a - float(b))
+            worst = max(worst, error / (scale * (1 + abs(float(b)))))
+            assert error <= REL * scale * (1 + abs(float(b)))
+    target(worst, label="relative history error")
+
+
+@given(moderate_fraction_masses(), moderate_fraction_masses(), fraction_velocities())
+def test_without_a_floor_the_history_is_the_velocity_sequence(
+    m1: Fraction, m2: Fraction, v1: Fraction
+) -> None:
+    """With no floor, ball 2 falling at the start, the space-time history bangs exactly as the
+    velocity-only sequence (C M)^p of (5.3)-(5.4): ball and ceiling bangs alternate, with the
+    same velocities, and both end at the same game-over point."""
+    v2 = Fraction(-1)
+    history = bang_history(
+        m1, m2, Fraction(1), Fraction(2), v1, v2, ceiling=Fraction(5), floor=None
+    )
+    sequence = ceiling_sequence(m1, m2, v1, v2)
+    assert history.ended
+    assert [b.kind for b in history.bangs] == [b.kind for b in sequence.bangs]
+    assert [(b.v1, b.v2) for b in history.bangs] == [(b.v1, b.v2) for b in sequence.bangs]
+
+
+@given(moderate_fraction_masses(), moderate_fraction_masses(), drop_speeds())
+@example(Fraction(49), Fraction(1), Fraction(1))  # Fig. 5.1: 21 bangs after the floor
+def test_an_elastic_sequence_ends_as_the_rotation_picture_predicts(
+    m1: Fraction, m2: Fraction, v0: Fraction
+) -> None:
+    """After the floor bounce (V0, -V0) the ball and ceiling bangs end after as many bangs as
+    the bang clock predicts: the least n with (n + 2) theta/2 >= pi, theta the bang angle
+    (5.11)-(5.13); then no bang is possible (the game-over point of Exercise 1.5.1)."""
+    beta = bang_angle(float(m1), float(m2)).angle / 2
+    ratio = math.pi / beta
+    assume(abs(ratio - round(ratio)) > 1e-9)  # away from exact ties, where rounding decides
+    sequence = ceiling_sequence(m1, m2, v0, -v0)
+    assert sequence.count == rotation_picture_bang_count(m1, m2)
+    assert not bang_possible(*sequence.velocities[-1])
+    assert game_over_bang(m1, m2, v0, -v0) == sequence.count + 1
+
+
+@given(masses(), masses())
+def test_the_float_sequence_ends_too(m1: float, m2: float) -> None:
+    """Whatever the masses (1e-6 to 1e6), the elastic sequence of (5.4) ends, with no bang
+    possible after its last: the bang clock cannot tick more than pi/(theta/2) times."""
+    assume(max(m1, m2) / min(m1, m2) < 1e5)  # keeps the count (~ pi sqrt(m1/m2)) small
+    sequence = ceiling_sequence(m1, m2, 1.0, -1.0)
+    beta = bang_angle(m1, m2).angle / 2
+    assert sequence.count <= math.ceil(math.pi / beta)
+    assert not bang_possible(*sequence.velocities[-1])
+
+
+@given(
+    moderate_fraction_masses(),
+    moderate_fraction_masses(),
+    drop_speeds(),
+    st.integers(min_value=1, max_value=30),
+)
+def test_the_book_numbering_of_bangs(m1: Fraction, m2: Fraction, v0: Fraction, n: int) -> None:
+    """Bang-1 is the floor bounce that leaves (V0, -V0); Bang-n (n >= 2) is the (n - 1)th bang
+    of the sequence (5.4): even bangs are ball bangs (12), odd ones ceiling bangs (02)."""
+    sequence = ceiling_sequence(m1, m2, v0, -v0)
+    assume(n <= sequence.count + 1)
+    assert velocities_after_bang(m1, m2, v0, -v0, n) == sequence.velocities[n - 1]
+    if n >= 2:
+        assert sequence.bangs[n - 2].kind == (BALLS if n % 2 == 0 else CEILING)
