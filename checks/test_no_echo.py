@@ -29,10 +29,15 @@ ALLOWED: set[Fraction] = {
 
 def literals(source: str) -> list[tuple[int, Fraction, str]]:
     """Every numeric literal of a module: (line, exact value, source text)."""
+    lines = source.splitlines()
     out = []
     for node in ast.walk(ast.parse(source)):
         if isinstance(node, ast.Constant) and type(node.value) in (int, float):
-            text = ast.get_source_segment(source, node) or repr(node.value)
+            if node.end_lineno == node.lineno and node.end_col_offset is not None:
+                raw = lines[node.lineno - 1].encode()[node.col_offset : node.end_col_offset]
+                text = raw.decode()
+            else:
+                text = repr(node.value)
             try:
                 value = Fraction(text.replace("_", ""))  # the decimal as written, exactly
             except ValueError:
