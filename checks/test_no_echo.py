@@ -1,9 +1,10 @@
 """The model computes, it does not remember (design section 5).
 
 A numeric literal in mechmodel that equals a catalogued printed value is flagged when it has
-three or more significant figures, is a non-integer decimal, or is an integer of 100 or more
-other than a power of ten. Unit factors come from units.toml through the evaluator, so no
-mechmodel literal equals one (other than 1 and powers of ten).
+three or more significant figures, is a non-integer decimal, or is an integer of 100 or more;
+powers of ten (10, 1000, 1e-9: scales and tolerances) are never flagged. Unit factors come from
+units.toml through the evaluator, so no mechmodel literal equals one (other than 1 and powers of
+ten).
 """
 
 from __future__ import annotations
@@ -46,14 +47,25 @@ def literals(source: str) -> list[tuple[int, Fraction, str]]:
     return out
 
 
+def _power_of_ten(value: Fraction) -> bool:
+    def is_pow10(k: int) -> bool:
+        return str(k).rstrip("0") == "1"
+
+    n, d = value.numerator, value.denominator
+    return (d == 1 and is_pow10(n)) or (n == 1 and is_pow10(d))
+
+
 def suspicious(value: Fraction, text: str) -> bool:
+    """Whether a literal equal to a printed value looks remembered rather than structural:
+    powers of ten (scales and tolerances such as 1e-9) and small integers never do."""
+    if _power_of_ten(value):
+        return False
     digits = text.lower().split("e")[0].replace("_", "").replace(".", "").lstrip("0")
     if value.denominator != 1:
         return True
     if len(digits.rstrip("0")) >= 3:
         return True
-    n = abs(value.numerator)
-    return n >= 100 and not math.log10(n).is_integer()
+    return abs(value.numerator) >= 100
 
 
 def echoes(source: str, printed: set[Fraction]) -> list[tuple[int, str]]:
@@ -100,6 +112,6 @@ def test_mechmodel_holds_no_unit_factor() -> None:
 
 
 def test_the_lint_catches_an_echo() -> None:
-    printed = {Fraction("3.62"), Fraction(7250), Fraction(60), Fraction(1000)}
-    source = "V3 = 3.62\nKE = 7250\nspeed = 60\nscale = 1000\nhalf = 0.5\n"
+    printed = {Fraction("3.62"), Fraction(7250), Fraction(60), Fraction(1000), Fraction(1, 10**9)}
+    source = "V3 = 3.62\nKE = 7250\nspeed = 60\nscale = 1000\nhalf = 0.5\ntol = 1e-9\n"
     assert echoes(source, printed) == [(1, "3.62"), (2, "7250")]

@@ -293,7 +293,10 @@ class _Evaluator:
         value = current.value / factor
         if claim.relation != "=":
             return self._judge_real(claim, printed, exact(value), None), value, None
-        judgement = judge_equal(printed, exact(value), extra=extra)
+        # an exact whole-number datum printed whole (a date, 5,280 feet) admits no rounding
+        whole = current.uncertainty == 0 and float(value).is_integer()
+        exact_only = whole and printed.value.denominator == 1 and printed.quantum == 1
+        judgement = judge_equal(printed, exact(value), extra=extra, exact_only=exact_only)
         auto = None
         if judgement.verdict == "erratum":
             matching = [

@@ -35,6 +35,16 @@ def line_tokens(book: Book, number: int) -> list[Token]:
     return tokenize_line(book.line(number), number)
 
 
+def occurrences(text: str, quote: str) -> int:
+    """How many times ``quote`` occurs in ``text``, overlapping matches included ("1 1" occurs
+    twice in "1 1 1")."""
+    count, pos = 0, text.find(quote)
+    while pos != -1:
+        count += 1
+        pos = text.find(quote, pos + 1)
+    return count
+
+
 def claim_refs(value: object) -> Iterator[str]:
     """Every ``{ claim = ID }`` inside an ``args`` value."""
     if isinstance(value, ClaimRef):
@@ -269,7 +279,7 @@ class _Checker:
         assert self.book is not None
         add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
         text = self.book.line(c.line)
-        count = text.count(c.quote)
+        count = occurrences(text, c.quote)
         if count != 1:
             where = "is not on" if count == 0 else f"occurs {count} times on"
             add("quote", f"{where} line {c.line}: {text.strip()[:80]!r}")
@@ -330,7 +340,7 @@ class _Checker:
         self.ids.setdefault(s.id, f.name)
         if not lo <= s.line <= hi:
             self.add(f, s.id, "line", f"{s.line} is outside [{lo}, {hi}]")
-        elif self.book is not None and self.book.line(s.line).count(s.quote) != 1:
+        elif self.book is not None and occurrences(self.book.line(s.line), s.quote) != 1:
             self.add(f, s.id, "quote", f"must occur exactly once on line {s.line}")
 
     # -- across the catalog ---------------------------------------------------------------
