@@ -139,7 +139,7 @@ def test_each_distinct_model_call_is_made_once(evaluation: Evaluation, catalog: 
         )
         rounded = [i for i in inputs if i.rounded]
         for call in [args, *(calls_module.corners(args, rounded) if rounded else [])]:
-            keys.add((claim.model, repr(sorted(call.items()))))
+            keys.add(calls_module.ModelCache.key(claim.model, {**call, **claim.assumptions}))
     # fewer calls than modelled claims: the tower claims share one call of independent_tower
     assert evaluation.model_calls == len(keys) < modelled
 

@@ -16,7 +16,7 @@ from typing import Any
 
 import pytest
 
-from reference.calls import ModelCache, build_args, input_at, replace_input
+from reference.calls import ModelCache, ModelCallError, build_args, input_at, replace_input
 from reference.catalog import Catalog
 from reference.compare import exact
 from reference.schema import Claim
@@ -28,7 +28,7 @@ SAMPLE = 200
 
 def nudged(value: Any) -> Any:
     if isinstance(value, int):
-        return value + 1
+        return value + 1 if value >= 0 else value - 1  # away from zero
     if isinstance(value, Fraction):
         return value * Fraction(1001, 1000)
     return value * 1.001 if value else 1e-3
@@ -58,7 +58,11 @@ class _Probe:
         moved = set()
         for item in inputs:
             changed = replace_input(args, item.path, nudged(input_at(args, item.path)))
-            if _value(self.cache.picked(claim.id, claim.model, changed, claim.pick)) != base:
+            try:
+                value = _value(self.cache.picked(claim.id, claim.model, changed, claim.pick))
+            except ModelCallError:
+                value = None  # the nudge left the model's domain: the input matters
+            if value != base:
                 moved.add(item.claim_id)
         return moved, {item.claim_id for item in inputs}
 

@@ -138,8 +138,13 @@ class ModelCache:
         self._results: dict[Any, Any] = {}
         self.calls = 0
 
+    @staticmethod
+    def key(model: str, args: dict[str, Any]) -> Any:
+        """The cache key of a call: the model and its arguments, with their types."""
+        return (model, _freeze(args))
+
     def call(self, claim_id: str, model: str, args: dict[str, Any]) -> Any:
-        key = (model, _freeze(args))
+        key = self.key(model, args)
         if key not in self._results:
             func = resolve(model)
             self.calls += 1

@@ -262,10 +262,10 @@ def xy_polynomials() -> st.SearchStrategy[dict[tuple[int, int], tuple[int, int]]
 
 
 def analytic_polynomials() -> st.SearchStrategy[dict[int, tuple[int, int]]]:
-    """A polynomial in z alone, degree at most 4, with Gaussian-integer coefficients:
+    """A polynomial in z alone, degree at most 3, with Gaussian-integer coefficients:
     {k: (re, im)} for the term (re + i im) z^k."""
-    return st.lists(st.integers(-9, 9), min_size=10, max_size=10).map(
-        lambda c: {k: (c[2 * k], c[2 * k + 1]) for k in range(5)}
+    return st.lists(st.integers(-9, 9), min_size=8, max_size=8).map(
+        lambda c: {k: (c[2 * k], c[2 * k + 1]) for k in range(4)}
     )
 
 
@@ -383,3 +383,36 @@ def fraction_tower_masses() -> st.SearchStrategy[list[Fraction]]:
 def ball_counts() -> st.SearchStrategy[int]:
     """A number of balls N of a tower or a column, 1 to 7."""
     return st.integers(min_value=1, max_value=7)
+
+
+# Exact draws built from integers p/q: a few times cheaper than st.fractions, whose draws
+# dominate the run time of the exact collision properties.
+
+
+def exact_masses() -> st.SearchStrategy[Fraction]:
+    """An exact positive mass p/q, from 1/1000 to 1000."""
+    return st.builds(Fraction, st.integers(1, 10**6), st.integers(1, 1000))
+
+
+def exact_velocities() -> st.SearchStrategy[Fraction]:
+    """An exact velocity p/q from -1000 to 1000."""
+    return st.builds(Fraction, st.integers(-(10**6), 10**6), st.integers(1, 1000))
+
+
+def exact_restitutions() -> st.SearchStrategy[Fraction]:
+    """An exact restitution coefficient p/q in [0, 1], with 0 and 1 among the draws."""
+    return st.builds(
+        lambda p, q: Fraction(p % (q + 1), q), st.integers(0, 10**4), st.integers(1, 100)
+    )
+
+
+def exact_velocity_pairs() -> st.SearchStrategy[tuple[Fraction, Fraction]]:
+    """An exact velocity vector (V1, V2), a point of the velocity-velocity plane (Fig. 3.1)."""
+    return st.tuples(exact_velocities(), exact_velocities())
+
+
+def exact_symmetric_matrices() -> st.SearchStrategy[tuple[tuple[Fraction, ...], ...]]:
+    """An exact transpose-symmetric 2 x 2 matrix ((a, c), (c, b)): an inertia tensor with
+    M_jk = M_kj (3.9b) that need not be diagonal."""
+    entry = exact_velocities()
+    return st.tuples(entry, entry, entry).map(lambda t: ((t[0], t[2]), (t[2], t[1])))
