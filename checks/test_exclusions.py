@@ -21,6 +21,7 @@ CASES = [
     ("equation-tag", 7512, "const.=- mg        (9.6)", "9.6", 1, True),
     ("equation-tag", 2077, "Newton’s equation (2.1) repeated", "2.1", 1, True),
     ("equation-tag", 1603, "angles that equal tan-1(0.5).", "0.5", 1, False),
+    ("equation-tag", 10137, "  (10. 41b)", "41", 1, True),
     ("ref-figure", 6528, "as shown in Fig. 8.1(b) so each", "8.1", 1, True),
     ("ref-figure", 1364, "straight lines in Fig. 1.1-2. For", "2", 1, True),
     ("ref-figure", 6527, "An even better final speed of V3=3.62 is had", "3.62", 1, False),
@@ -30,14 +31,20 @@ CASES = [
     ("ref-chapter", 6482, "“Bang-Bang” models of Ch.4 ignored", "4", 1, True),
     ("ref-chapter", 6510, " Chapter 8 N-Body Collisions", "8", 1, True),
     ("ref-chapter", 125, "Euclid (~300BC) in Ch. 1-11 and", "300", 1, False),
+    ("ref-chapter", 9552, "products in Appendix 1.A of this Unit.", "1", 1, True),
     ("ref-section", 12854, "rods are treated in Sec. 6.4 of the", "6.4", 1, True),
     ("ref-section", 938, " -30 sec. 30 sec.", "30", 1, False),
     ("ref-unit", 11, "Topics in Units 1-8", "8", 1, True),
     ("ref-unit", 139, "(in Ch. 3 Unit 1 sketched↓below)", "1", 1, True),
     ("ref-unit", 1100, "on unit circle (r=1) (Fig. 1.3a)", "1", 1, False),
+    ("ref-unit", 152, "preview of topics in Units 2 thru 8 that go", "8", 1, True),
+    ("ref-page", 466, "using Occam’s Razor (See p. 16) to produce", "16", 1, True),
+    ("ref-page", 8224, "A binomial expansion (See page 119) turns", "119", 1, True),
+    ("ref-page", 7490, "That is 100·10-27=10-25 kg packed", "100·10-27", 1, False),
     ("exercise-number", 6925, "Exercise 1.8.2 Absolute Maximum", "1.8", 1, True),
     ("exercise-number", 6925, "Exercise 1.8.2 Absolute Maximum", "2", 1, True),
     ("exercise-number", 5213, "Exercise 1.5.1 Gameover 49:1", "49", 1, False),
+    ("exercise-number", 4712, "(See exercise 5.1.) Matrix group", "5.1", 1, True),
     ("citation", 6544, "Am. J. Phys. 39, 656 (1971).", "656", 1, True),
     ("citation", 6544, "Am. J. Phys. 39, 656 (1971).", "1971", 1, True),
     ("citation", 780, "Scripture(Joshua 10:10-15.) tells", "15", 1, True),
@@ -55,6 +62,7 @@ CASES = [
     ("formula-notation", 1603, "angles that equal tan-1(0.5).", "1", 1, True),
     ("formula-notation", 3410, "(1D-2-body) collision", "1", 1, True),
     ("formula-notation", 3410, "(1D-2-body) collision", "2", 1, False),
+    ("formula-notation", 7781, "(b) 2-D Oscillator Phasor Plot", "2", 1, True),
     ("formula-notation", 4334, "After Bang-11(02) big", "11", 1, False),
 ]
 
@@ -87,6 +95,16 @@ def test_every_rule_has_positive_and_negative_cases() -> None:
             continue  # on whole lines: test_page_footer_on_the_book
         outcomes = {ex for r, *_, ex in CASES if r == rule.name}
         assert outcomes == {True, False}, rule.name
+
+
+@pytest.mark.integrity
+def test_a_figure_number_after_a_line_ending_in_fig(book: Book) -> None:
+    assert book.line(1384).rstrip().endswith("as the triangle in Fig.")
+    token = tokenize_line(book.line(1385), 1385)[0]
+    assert token.text == "1.4"
+    assert excluded_by(rule_spans(book.lines, 1385), token.start, token.end) == "ref-figure"
+    token = tokenize_line(book.line(1386), 1386)
+    assert all(excluded_by(rule_spans(book.lines, 1386), t.start, t.end) is None for t in token)
 
 
 @pytest.mark.integrity

@@ -45,13 +45,17 @@ def _regex_rule(
     return spans
 
 
-_EQUATION_TAG = re.compile(r"(?<![\w)\]])\((?:1[0-2]|[1-9]|1\.A)\.\d{1,2}[a-z]?\)")
-_FIGURE = _ref(r"Figs?\.|Figures?")
+_EQUATION_TAG = re.compile(r"(?<![\w)\]])\((?:1[0-2]|[1-9]|1\.A)\. ?\d{1,2}[a-z]?\)")
+_FIGURE_WORDS = r"Figs?\.?|Figures?|Landscapes?"
+_FIGURE = _ref(_FIGURE_WORDS)
+_FIGURE_AT_END = re.compile(rf"\b(?:{_FIGURE_WORDS})\s*$")
+_LIST_AT_START = re.compile(rf"^\s*{_LIST}")
 _TABLE = _ref(r"Tables?")
-_CHAPTER = _ref(r"Chapters?|Chs?\.")
+_CHAPTER = _ref(r"Chapters?|Chs?\.|Appendix")
 _SECTION = _ref(r"Sections?|Secs?\.|§")
-_UNIT = re.compile(r"\bUnits?\s+\d+(?:\s*[-–]\s*\d+)?")
-_EXERCISE = _ref(r"Exercises?|Problems?|Ex\.")
+_UNIT = re.compile(r"Units?\s+\d+(?:\s*(?:[-–,&]|and|thru|through|to)\s*\d+)*")
+_PAGE = re.compile(r"\b(?:pp?\.|[Pp]ages?)\s*\d+(?:\s*[-–]\s*\d+)?")
+_EXERCISE = _ref(r"[Ee]xercises?|Problems?|Ex\.|Solutions? to")
 _FOOTER = re.compile(r"^\s*©\s*\d{4}\s+W\.\s*G\.\s*Harter")
 _PAGE_NUMBER = re.compile(r"^\s*\d{1,3}\s*$")
 _CITATION = re.compile(
@@ -61,7 +65,22 @@ _CITATION = re.compile(
 _LIST_NUMBER = re.compile(r"^\s*\(?(\d{1,2})[.)]\s+(?=[A-Z])")
 _GLUED_DIGIT = re.compile(r"(?<=[^\W\d_])\d(?!\d|\.\d)")
 _INVERSE_FUNCTION = re.compile(r"\b(?:arc)?(?:sin|cos|tan|sec|csc|cot)h?[-−](1)(?![\d.])")
-_DIMENSION = re.compile(r"\b([123])D\b")
+_DIMENSION = re.compile(r"\b([1-4])-?D\b")
+
+
+def _figure(lines: Sequence[str], number: int) -> list[Span]:
+    """Figure references on the line, and a figure number that starts the line when the line
+    before (blank lines aside) ends with "Fig."."""
+    text = lines[number - 1]
+    spans = [m.span() for m in _FIGURE.finditer(text)]
+    before = number - 1
+    while before >= 1 and not lines[before - 1].strip():
+        before -= 1
+    if before >= 1 and _FIGURE_AT_END.search(lines[before - 1]):
+        m = _LIST_AT_START.match(text)
+        if m:
+            spans.append(m.span())
+    return spans
 
 
 def _footer(lines: Sequence[str], number: int) -> list[Span]:
@@ -110,27 +129,35 @@ RULES: tuple[Rule, ...] = (
     ),
     Rule(
         "ref-figure",
-        "a figure reference: Fig. 8.1(b), Figs. 4.6-4.8, Fig. 1.1-2, Figure 3",
-        _regex_rule(_FIGURE),
+        "a figure reference: Fig. 8.1(b), Figs. 4.6-4.8, Fig. 1.1-2, Fig10.10a, Landscape 1.2, "
+        "and a figure number starting a line after a line that ends with 'Fig.'",
+        _figure,
         False,
     ),
     Rule("ref-table", "a table reference: Table 1.1", _regex_rule(_TABLE), False),
     Rule(
         "ref-chapter",
-        "a chapter reference or heading: Chapter 8, Ch. 1-5, Chapter6.",
+        "a chapter reference or heading: Chapter 8, Ch. 1-5, Chapter6., Appendix 1.A",
         _regex_rule(_CHAPTER),
         False,
     ),
     Rule("ref-section", "a section reference: Section 4, Sec. 3.2", _regex_rule(_SECTION), False),
     Rule(
         "ref-unit",
-        "a reference to a Unit of the book: Unit 1, Units 1-8",
+        "a reference to a Unit of the book: Unit 1, Units 1-8, Units 2 thru 8, Units 3 and 7",
         _regex_rule(_UNIT),
         False,
     ),
     Rule(
+        "ref-page",
+        "a page reference: p. 16, See page 119",
+        _regex_rule(_PAGE),
+        False,
+    ),
+    Rule(
         "exercise-number",
-        "an exercise or problem number: Exercise 1.8.2, Problem 12.3",
+        "an exercise or problem number: Exercise 1.8.2, exercise 5.1, Problem 12.3, "
+        "Solutions to 1.5.1",
         _regex_rule(_EXERCISE),
         False,
     ),
@@ -156,7 +183,7 @@ RULES: tuple[Rule, ...] = (
     Rule(
         "formula-notation",
         "notation, not a quantity: the -1 of an inverse function "
-        "(tan-1, cos-1) and dimension labels (1D, 2D, 3D)",
+        "(tan-1, cos-1) and dimension labels (1D, 2-D, 3D, 4D)",
         _notation,
         True,
     ),
