@@ -42,10 +42,11 @@ def test_claims_verdict_filter_and_chapter(book: Book, capsys: pytest.CaptureFix
         "--book",
         str(book.path),
     )
-    rows = [json.loads(line) for line in out.splitlines()]
+    rows = {r["id"]: r for r in map(json.loads, out.splitlines())}
     assert code == 0
-    assert [r["id"] for r in rows] == ["ch08.tower-100-30-10.v1"]
-    assert rows[0]["diagnosis"]["auto"].startswith("decimal-shift")
+    assert {r["verdict"] for r in rows.values()} == {"erratum"}
+    assert {r["chapter"] for r in rows.values()} == {"8"}
+    assert rows["ch08.tower-100-30-10.v1"]["diagnosis"]["auto"].startswith("decimal-shift")
 
 
 def test_claims_exit_one_when_a_verdict_differs(

@@ -1,11 +1,12 @@
 """Sensitivity: perturbing a claim's inputs moves its model value (design section 5).
 
 For a fixed sample of modelled claims every referenced input is nudged (integers by one, other
-numbers by one part in a thousand). A claim that is not a pure identity must move under at least
-one of its inputs (a model returning a remembered number fails). An input that leaves a sampled
-claim unmoved must move some other claim that uses it (a model that ignores an argument
-altogether fails); an input may rightly not matter to one claim, such as the ceiling to the
-first bang.
+numbers by one part in a thousand). A derived claim must move under at least one of its inputs (a
+model returning a remembered number fails), unless its value is a structural zero (a height at
+the floor); identities and counts may rightly stay put under small nudges. An input that leaves
+a sampled claim unmoved must move some other claim that uses it (a model that ignores an
+argument altogether fails); an input may rightly not matter to one claim, such as the ceiling to
+the first bang.
 """
 
 from __future__ import annotations
@@ -47,8 +48,8 @@ class _Probe:
         self.by_id = catalog.by_id()
         self.cache = ModelCache()
 
-    def moved_inputs(self, claim: Claim) -> tuple[set[str], set[str]]:
-        """The inputs whose nudge moves the claim's value, and all its inputs."""
+    def moved_inputs(self, claim: Claim) -> tuple[set[str], set[str], Fraction | None]:
+        """The inputs whose nudge moves the claim's value, all its inputs, and the value."""
         assert claim.model is not None
         args, inputs = build_args(
             claim.args, lambda ident: (self.by_id[ident], parsed(self.by_id[ident]))
@@ -64,7 +65,7 @@ class _Probe:
                 value = None  # the nudge left the model's domain: the input matters
             if value != base:
                 moved.add(item.claim_id)
-        return moved, {item.claim_id for item in inputs}
+        return moved, {item.claim_id for item in inputs}, base
 
 
 def test_models_move_with_their_inputs(catalog: Catalog) -> None:
@@ -76,8 +77,8 @@ def test_models_move_with_their_inputs(catalog: Catalog) -> None:
     probe = _Probe(catalog)
     still, idle = [], set()
     for claim in sample:
-        moved, used = probe.moved_inputs(claim)
-        if not moved and claim.kind != "identity":
+        moved, used, value = probe.moved_inputs(claim)
+        if not moved and claim.kind == "derived" and value != 0:
             still.append(claim.id)
         idle |= used - moved
     users = {ident: [c for c in with_inputs if ident in refs[c.id]] for ident in sorted(idle)}

@@ -5,12 +5,21 @@ coefficient ``e`` runs from 0 (Ka-runch: the bodies stick, Fig. 2.1) to 1 (Ka-bo
 eq. (4.1)); in between a collision loses part of the energy available in the centre-of-momentum
 frame (Fig. 3.1). Works on floats, ``Fraction`` (exact) and mpmath numbers; units are whatever
 the inputs carry (the book's scaled units or SI).
+
+The geometry of chapters 2-3 lives in the velocity-velocity plane (V1, V2) = (V_SUV, V_VW):
+a collision moves the point IN to FIN along the momentum line of slope -m1/m2 (2.4), (3.6);
+the kinetic energy fixes an ellipse of radii sqrt(2 KE/m1), sqrt(2 KE/m2) (3.7). A Galilean
+frame moving at ``u`` subtracts ``u`` from every velocity (Fig. 2.3-2.5); the centre-of-momentum
+(COM) frame is the one moving at V_COM. Square roots stay exact for Fraction inputs that are
+perfect squares and are floats otherwise.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import Any
 
 from mechmodel import inputs
@@ -20,7 +29,7 @@ from mechmodel import inputs
 class Collision:
     """A two-body collision: masses, velocities before and after.
 
-    ``momentum``, ``ke_before``, ``ke_after`` and ``ke_lost`` need finite masses.
+    ``momentum``, ``ke_before``, ``ke_after``, ``ke_lost`` need finite masses.
     """
 
     masses: tuple[Any, Any]
@@ -56,6 +65,19 @@ class Collision:
     def ke_lost(self) -> Any:
         """Kinetic energy lost to crumpling (zero when elastic)."""
         return self.ke_before - self.ke_after
+
+    @property
+    def com_velocity(self) -> Any:
+        """Velocity V_COM of the centre of momentum (2.5b), the same before and after.
+
+        With an infinite mass (a wall) it is the wall's velocity.
+        """
+        m1, m2 = self.masses
+        if inputs.is_infinite(m1):
+            return self.before[0]
+        if inputs.is_infinite(m2):
+            return self.before[1]
+        return center_of_mass_velocity(self.masses, self.before)
 
 
 def collide(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any = 1) -> Collision:
@@ -119,3 +141,494 @@ def center_of_mass_velocity(masses: Sequence[Any], velocities: Sequence[Any]) ->
     """Velocity of the centre of momentum, V_COM = sum m v / sum m (eq. (2.5b))."""
     pairs = _pairs(masses, velocities)
     return sum(m * v for m, v in pairs) / sum(m for m, _ in pairs)
+
+
+# -- momentum: totals, the zero-sum exchange and the momentum line (chapter 2) ----------------
+
+
+def total_mass(masses: Sequence[Any]) -> Any:
+    """Total mass M_TOTAL = sum m of the bodies that may crunch into one hunk (Fig. 2.1, (2.5a))."""
+    if not masses:
+        raise ValueError("give at least one mass")
+    for i, m in enumerate(masses):
+        inputs.mass(m, f"masses[{i}]")
+    return sum(masses)
+
+
+def momentum_change(masses: Sequence[Any], before: Sequence[Any], after: Sequence[Any]) -> Any:
+    """Change of total momentum, Delta P_Total = P(after) - P(before) (2.3), (3.2).
+
+    Zero for any collision (the zero-sum game); applied to printed IN and FIN points it checks
+    that they lie on one momentum line.
+    """
+    return momentum(masses, after) - momentum(masses, before)
+
+
+def momentum_line_slope(m1: Any, m2: Any) -> Any:
+    """Slope dV2/dV1 = -m1/m2 of the momentum line in the (V1, V2) plane ((2.4), (3.6b))."""
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    return -m1 / m2
+
+
+def momentum_exchange_step(m1: Any, m2: Any) -> tuple[Any, Any]:
+    """A velocity change (Delta V1, Delta V2) = (-m2, m1) that keeps P = m1 V1 + m2 V2.
+
+    Body 1 loses m2 units of velocity for every m1 units body 2 gains (the zero-sum rule (2.3));
+    its direction is that of the momentum line (the book's slope-(-1:4) line of Fig. 2.6a).
+    """
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    return (-m2, m1)
+
+
+def momentum_line_partner(m1: Any, m2: Any, v1: Any, v2: Any, u1: Any) -> Any:
+    """V2 of the point with V1 = ``u1`` on the momentum line through (v1, v2) (Fig. 2.6a).
+
+    The line keeps m1 V1 + m2 V2 = m1 v1 + m2 v2, so V2 = v2 - (m1/m2)(u1 - v1); every point on
+    it has the same m1:m2 weighted average V_COM (2.5b).
+    """
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    for value, name in ((v1, "v1"), (v2, "v2"), (u1, "u1")):
+        inputs.real(value, name)
+    return v2 - m1 * (u1 - v1) / m2
+
+
+# -- Galilean frames and reversal (Fig. 2.3-2.5) ------------------------------------------
+
+
+def shift_frame(velocities: Sequence[Any], frame_velocity: Any) -> tuple[Any, ...]:
+    """Velocities seen from a frame moving at ``frame_velocity``: v - u (Galilean, Fig. 2.5).
+
+    The cop going at u = V_COM sees the COM frame of Fig. 2.3-2.4.
+    """
+    inputs.real(frame_velocity, "frame_velocity")
+    for i, v in enumerate(velocities):
+        inputs.real(v, f"velocities[{i}]")
+    return tuple(v - frame_velocity for v in velocities)
+
+
+def collide_in_frame(
+    m1: Any, m2: Any, v1: Any, v2: Any, frame_velocity: Any, restitution: Any = 1
+) -> Collision:
+    """The collision of ``collide`` seen from a frame moving at ``frame_velocity``.
+
+    ``v1``, ``v2`` are Earth-frame velocities; the result's ``before`` and ``after`` are frame
+    velocities (each Earth value minus u), as in the cop frame of Fig. 2.3-2.4 and the car
+    frames VW(I), SUV(F) of Fig. 2.5b. Galilean covariance: colliding the shifted velocities
+    gives the shifted result, so the collision is computed in the frame itself.
+    """
+    w1, w2 = shift_frame((v1, v2), frame_velocity)
+    return collide(m1, m2, w1, w2, restitution)
+
+
+def velocity_reversed(hit: Collision) -> Collision:
+    """The collision with every velocity negated, V -> -V (reflection through the origin of
+    the (V1, V2) plane, the book's reflection through the COM point in Fig. 2.4).
+
+    The collision law is odd in the velocities, so this is again a collision with the same
+    restitution.
+    """
+    return Collision(hit.masses, (-hit.before[0], -hit.before[1]), (-hit.after[0], -hit.after[1]))
+
+
+def time_reversed(hit: Collision) -> Collision:
+    """The time-reversed collision (Delta t -> -Delta t): it starts from the reversed outgoing
+    velocities and ends at the reversed incoming ones (Fig. 2.4, the reversed video of Fig. 2.2).
+
+    For an elastic collision this is what ``collide`` gives from -FIN; an inelastic one does
+    not reverse (the "un-crash" of Fig. 2.1).
+    """
+    return Collision(hit.masses, (-hit.after[0], -hit.after[1]), (-hit.before[0], -hit.before[1]))
+
+
+def collide_reversed(
+    m1: Any, m2: Any, v1: Any, v2: Any, frame_velocity: Any = 0, restitution: Any = 1
+) -> Collision:
+    """The collision that starts from the reversed incoming velocities, in a frame at u.
+
+    Seen from the frame moving at ``frame_velocity``, the incoming velocities (v - u) are
+    negated and collided: the book's reversed Ka-bong of Fig. 2.4, initial (-10, 40) to final
+    (10, -40) for the cop frame. Equals ``velocity_reversed`` of the forward collision.
+    """
+    w1, w2 = shift_frame((v1, v2), frame_velocity)
+    return collide(m1, m2, -w1, -w2, restitution)
+
+
+# -- lines, angles and energy ellipses (Fig. 3.1, (3.6)-(3.7)) -------------------------------
+
+
+def _is_mp(x: Any) -> bool:
+    return type(x).__module__.startswith("mpmath")
+
+
+def _sqrt(x: Any) -> Any:
+    """Square root of x >= 0: exact for a Fraction or int that is a perfect square."""
+    if isinstance(x, int | Fraction) and not isinstance(x, bool):
+        q = Fraction(x)
+        if q < 0:
+            raise ValueError(f"square root of a negative number {x!r}")
+        rn, rd = math.isqrt(q.numerator), math.isqrt(q.denominator)
+        if rn * rn == q.numerator and rd * rd == q.denominator:
+            return Fraction(rn, rd)
+        return math.sqrt(q)
+    if x < 0:
+        raise ValueError(f"square root of a negative number {x!r}")
+    return x**0.5
+
+
+def line_angle(slope: Any) -> Any:
+    """Angle (radians) of a line of slope ``slope`` from the horizontal axis, atan(slope).
+
+    The equal-velocity line V2 = V1 (slope 1) is the book's 45° line (Fig. 2.1).
+    """
+    inputs.real(slope, "slope")
+    if _is_mp(slope):
+        import mpmath
+
+        return mpmath.atan(slope)
+    return math.atan(slope)
+
+
+def line_slope(angle: Any) -> Any:
+    """Slope tan(angle) of a line at ``angle`` radians from the horizontal axis."""
+    inputs.real(angle, "angle")
+    if _is_mp(angle):
+        import mpmath
+
+        return mpmath.tan(angle)
+    return math.tan(angle)
+
+
+def ellipse_radii(m1: Any, m2: Any, energy: Any) -> tuple[Any, Any]:
+    """Radii (a, b) = (sqrt(2 KE/m1), sqrt(2 KE/m2)) of the KE ellipse (3.7b).
+
+    ``a`` lies along the V1 axis, ``b`` along V2: 1/2 m1 a^2 = 1/2 m2 b^2 = KE.
+    """
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    inputs.real(energy, "energy")
+    if energy < 0:
+        raise ValueError(f"a kinetic energy is not negative, got {energy!r}")
+    return (_sqrt(2 * energy / m1), _sqrt(2 * energy / m2))
+
+
+def ellipse_point(a: Any, b: Any, angle: Any) -> tuple[Any, Any]:
+    """Point (a cos s, b sin s) of the ellipse of radii a, b (Exercise Figs. 3.6-3.7)."""
+    inputs.positive(a, "a")
+    inputs.positive(b, "b")
+    inputs.real(angle, "angle")
+    if _is_mp(angle):
+        import mpmath
+
+        return (a * mpmath.cos(angle), b * mpmath.sin(angle))
+    return (a * math.cos(angle), b * math.sin(angle))
+
+
+@dataclass(frozen=True)
+class EnergyEllipse:
+    """The KE ellipse 1/2 m1 V1^2 + 1/2 m2 V2^2 = KE through the point (v1, v2) (Fig. 3.1).
+
+    ``energy`` is KE, ``radii`` its (a, b) of (3.7b), ``tangent_slope`` the slope of the
+    ellipse at the point, ``momentum_slope`` the slope -m1/m2 of the momentum line. At the COM
+    point (V, V) the two slopes agree; in the COM frame the tangent where the momentum line cuts
+    the ellipse is 1, the slope of the COM line (Fig. 3.1, the duality of line 2419).
+    """
+
+    masses: tuple[Any, Any]
+    point: tuple[Any, Any]
+
+    @property
+    def energy(self) -> Any:
+        """Kinetic energy KE of the point (3.5b)."""
+        return kinetic_energy(self.masses, self.point)
+
+    @property
+    def radii(self) -> tuple[Any, Any]:
+        """Radii (a, b) along V1 and V2 (3.7b)."""
+        return ellipse_radii(self.masses[0], self.masses[1], self.energy)
+
+    @property
+    def tangent_slope(self) -> Any:
+        """Slope dV2/dV1 = -m1 v1 / (m2 v2) of the ellipse at the point; ValueError where the
+        tangent is vertical (v2 = 0)."""
+        (m1, m2), (v1, v2) = self.masses, self.point
+        if v2 == 0:
+            raise ValueError("the tangent is vertical where V2 = 0")
+        return -(m1 * v1) / (m2 * v2)
+
+    @property
+    def momentum_slope(self) -> Any:
+        """Slope -m1/m2 of the momentum line through the point ((2.4), (3.6b))."""
+        return momentum_line_slope(*self.masses)
+
+
+def energy_ellipse(m1: Any, m2: Any, v1: Any, v2: Any) -> EnergyEllipse:
+    """The KE ellipse of bodies m1, m2 through the velocity point (v1, v2) (Fig. 3.1, (3.7))."""
+    _pairs((m1, m2), (v1, v2))
+    return EnergyEllipse((m1, m2), (v1, v2))
+
+
+@dataclass(frozen=True)
+class ComFrame:
+    """Two bodies seen from their centre-of-momentum frame (Fig. 2.4, Fig. 3.1's small ellipse).
+
+    ``com_velocity`` is V_COM in the original frame; ``velocities`` are v - V_COM (their
+    momentum is zero); ``energy`` is the KE left in the COM frame, 1/2 mu (v1 - v2)^2, the most
+    any collision can lose (the ECOM of (3.8)).
+    """
+
+    masses: tuple[Any, Any]
+    com_velocity: Any
+    velocities: tuple[Any, Any]
+
+    @property
+    def speeds(self) -> tuple[Any, Any]:
+        """Speeds |v - V_COM| of the two bodies in the COM frame."""
+        return (abs(self.velocities[0]), abs(self.velocities[1]))
+
+    @property
+    def energy(self) -> Any:
+        """Kinetic energy in the COM frame (3.8), the ECOM that a Ka-runch loses."""
+        return kinetic_energy(self.masses, self.velocities)
+
+    @property
+    def ellipse(self) -> EnergyEllipse:
+        """The COM-frame KE ellipse through the COM-frame velocities (Fig. 3.1)."""
+        return EnergyEllipse(self.masses, self.velocities)
+
+
+def com_frame(m1: Any, m2: Any, v1: Any, v2: Any) -> ComFrame:
+    """Bodies m1, m2 at velocities v1, v2 seen from their COM frame (Fig. 2.4, (3.8))."""
+    u = center_of_mass_velocity((m1, m2), (v1, v2))
+    w = shift_frame((v1, v2), u)
+    return ComFrame((m1, m2), u, (w[0], w[1]))
+
+
+# -- partially inelastic collisions: the Ka-whump on a reduced ellipse (Fig. 3.2) -------------
+
+
+@dataclass(frozen=True)
+class PartialCollision:
+    """A Ka-whump that leaves the kinetic energy ``energy_after`` (Fig. 3.2b).
+
+    The momentum line cuts the reduced ellipse of energy ``energy_after`` in two points:
+    ``rebound`` (the collision with restitution ``restitution``, the top F_whump point) and
+    ``pass_through`` (its mirror through the COM point, the cars passing through each other).
+    """
+
+    masses: tuple[Any, Any]
+    before: tuple[Any, Any]
+    energy_after: Any
+    restitution: Any
+    rebound: Collision
+    pass_through: Collision
+
+    @property
+    def ke_before(self) -> Any:
+        """Kinetic energy before the collision (3.5b)."""
+        return kinetic_energy(self.masses, self.before)
+
+    @property
+    def ke_lost(self) -> Any:
+        """Energy lost, KE before minus ``energy_after`` (the E_loss of Fig. 3.2)."""
+        return self.ke_before - self.energy_after
+
+
+def collide_to_energy(m1: Any, m2: Any, v1: Any, v2: Any, energy_after: Any) -> PartialCollision:
+    """The partially inelastic collision that ends with kinetic energy ``energy_after``.
+
+    The energy left is IE + e^2 E_COM, where IE = 1/2 (m1 + m2) V_COM^2 is what a Ka-runch
+    keeps and E_COM = 1/2 mu (v1 - v2)^2 the energy in the COM frame (3.8); so the restitution
+    is e = sqrt((energy_after - IE) / E_COM). ``energy_after`` must lie in [IE, KE]
+    (``ValueError`` otherwise, and when the bodies have no relative velocity).
+    """
+    frame = com_frame(m1, m2, v1, v2)
+    inputs.real(energy_after, "energy_after")
+    available = frame.energy
+    if available == 0:
+        raise ValueError("the bodies have no relative velocity: nothing collides")
+    kept = kinetic_energy((m1, m2), (frame.com_velocity, frame.com_velocity))
+    total = kept + available
+    if not kept <= energy_after <= total:
+        raise ValueError(
+            f"energy_after must lie between the Ka-runch energy {kept!r} and KE {total!r}, "
+            f"got {energy_after!r}"
+        )
+    e = _sqrt((energy_after - kept) / available)
+    rebound = collide(m1, m2, v1, v2, e)
+    u = frame.com_velocity
+    through = (u + e * frame.velocities[0], u + e * frame.velocities[1])
+    return PartialCollision(
+        (m1, m2),
+        (v1, v2),
+        energy_after,
+        e,
+        rebound,
+        Collision((m1, m2), (v1, v2), through),
+    )
+
+
+# -- tensor forms of momentum and energy ((3.9)-(3.14)) -----------------------------------
+
+
+def inertia_tensor(masses: Sequence[Any]) -> tuple[tuple[Any, ...], ...]:
+    """The diagonal inertia matrix M of (3.9a): M_jj = m_j, M_jk = 0 for j != k."""
+    for i, m in enumerate(masses):
+        inputs.mass(m, f"masses[{i}]")
+    return tuple(
+        tuple(m if j == k else 0 * m for k in range(len(masses))) for j, m in enumerate(masses)
+    )
+
+
+def _check_matrix(inertia: Sequence[Sequence[Any]], n: int) -> None:
+    if len(inertia) != n or any(len(row) != n for row in inertia):
+        raise ValueError(f"the inertia matrix must be {n} x {n} to match the velocity vectors")
+    for j, row in enumerate(inertia):
+        for k, x in enumerate(row):
+            inputs.real(x, f"inertia[{j}][{k}]")
+
+
+def quadratic_form(u: Sequence[Any], inertia: Sequence[Sequence[Any]], v: Sequence[Any]) -> Any:
+    """The tensor form u . M . v = sum_jk u_j M_jk v_k of (3.11a)-(3.12b).
+
+    V_COM . M . V_IN is V_COM P_Total (3.11a); V . M . V / 2 the kinetic energy (3.12c).
+    """
+    if len(u) != len(v) or not u:
+        raise ValueError("u and v must be vectors of one length")
+    _check_matrix(inertia, len(u))
+    for i, (a, b) in enumerate(zip(u, v, strict=True)):
+        inputs.real(a, f"u[{i}]")
+        inputs.real(b, f"v[{i}]")
+    return sum(u[j] * inertia[j][k] * v[k] for j in range(len(u)) for k in range(len(v)))
+
+
+@dataclass(frozen=True)
+class TensorForms:
+    """The quadratic forms of (3.11)-(3.14) for inertia M and velocities IN, FIN and COM.
+
+    With V_COM = (V_IN + V_FIN)/2 (the T-symmetry (3.4)) and a transpose-symmetric M,
+    ``ke_from_com`` = V_COM.P - V_FIN.M.V_IN/2 equals ``ke_in`` (3.12a); the Ka-runch energy
+    V_COM.P/2 splits as ``quarter_in + quarter_cross`` (3.13) and the crunch energy KE - IE is
+    ``quarter_in - quarter_cross`` (3.14).
+    """
+
+    inertia: tuple[tuple[Any, ...], ...]
+    v_in: tuple[Any, ...]
+    v_fin: tuple[Any, ...]
+    v_com: tuple[Any, ...]
+
+    def _form(self, u: Sequence[Any], v: Sequence[Any]) -> Any:
+        return quadratic_form(u, self.inertia, v)
+
+    @property
+    def com_momentum(self) -> Any:
+        """V_COM . M . V_IN = V_COM P_Total (3.11a, b)."""
+        return self._form(self.v_com, self.v_in)
+
+    @property
+    def com_momentum_fin(self) -> Any:
+        """V_COM . M . V_FIN, equal to ``com_momentum`` when momentum is conserved (3.11a)."""
+        return self._form(self.v_com, self.v_fin)
+
+    @property
+    def half_com_momentum(self) -> Any:
+        """V_COM P_Total / 2, the Ka-runch energy IE of (3.13)."""
+        return self.com_momentum / 2
+
+    @property
+    def cross(self) -> Any:
+        """V_FIN . M . V_IN (3.12b)."""
+        return self._form(self.v_fin, self.v_in)
+
+    @property
+    def cross_transposed(self) -> Any:
+        """V_IN . M . V_FIN, equal to ``cross`` for a transpose-symmetric M (3.12b)."""
+        return self._form(self.v_in, self.v_fin)
+
+    @property
+    def half_cross(self) -> Any:
+        """V_FIN . M . V_IN / 2, subtracted in (3.12c)."""
+        return self.cross / 2
+
+    @property
+    def ke_from_com(self) -> Any:
+        """V_COM P_Total - V_FIN . M . V_IN / 2, line 1 of (3.12a, c)."""
+        return self.com_momentum - self.half_cross
+
+    @property
+    def ke_in(self) -> Any:
+        """Kinetic energy V_IN . M . V_IN / 2 (3.12c)."""
+        return self._form(self.v_in, self.v_in) / 2
+
+    @property
+    def ke_fin(self) -> Any:
+        """Kinetic energy V_FIN . M . V_FIN / 2 (3.12c)."""
+        return self._form(self.v_fin, self.v_fin) / 2
+
+    @property
+    def ie(self) -> Any:
+        """Kinetic energy at the COM point, V_COM . M . V_COM / 2 (the IE of (3.13))."""
+        return self._form(self.v_com, self.v_com) / 2
+
+    @property
+    def quarter_in(self) -> Any:
+        """V_IN . M . V_IN / 4 (3.13)."""
+        return self._form(self.v_in, self.v_in) / 4
+
+    @property
+    def quarter_cross(self) -> Any:
+        """V_FIN . M . V_IN / 4 (3.13)."""
+        return self.cross / 4
+
+    @property
+    def crunch(self) -> Any:
+        """KE - IE = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4, the crunch energy (3.14)."""
+        return self.quarter_in - self.quarter_cross
+
+
+def tensor_energy_forms(
+    inertia: Sequence[Sequence[Any]],
+    v_in: Sequence[Any],
+    v_fin: Sequence[Any],
+    v_com: Sequence[Any],
+) -> TensorForms:
+    """The tensor forms (3.11)-(3.14) of inertia matrix M (any n x n) and velocity vectors
+    V_IN, V_FIN, V_COM (the book's (60, 10), (40, 90), (50, 50) for Fig. 3.1)."""
+    n = len(v_in)
+    if not n or len(v_fin) != n or len(v_com) != n:
+        raise ValueError("V_IN, V_FIN and V_COM must be vectors of one length")
+    _check_matrix(inertia, n)
+    for name, vec in (("v_in", v_in), ("v_fin", v_fin), ("v_com", v_com)):
+        for i, x in enumerate(vec):
+            inputs.real(x, f"{name}[{i}]")
+    return TensorForms(
+        tuple(tuple(row) for row in inertia), tuple(v_in), tuple(v_fin), tuple(v_com)
+    )
+
+
+def collision_tensor_forms(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any = 1) -> TensorForms:
+    """The tensor forms (3.11)-(3.14) of a two-body collision: M = diag(m1, m2) (3.9a),
+    V_IN = (v1, v2), V_FIN from ``collide`` and V_COM = (V, V) at the COM velocity (2.5b).
+
+    For the SUV/VW crash of Fig. 3.1 these are the book's (60, 10), (40, 90) and (50, 50).
+    """
+    hit = collide(m1, m2, v1, v2, restitution)
+    v = hit.com_velocity
+    return tensor_energy_forms(inertia_tensor((m1, m2)), hit.before, hit.after, (v, v))
+
+
+# -- units ------------------------------------------------------------------------------------
+
+
+def velocity_in_si(velocity: Any, length: Any, duration: Any) -> Any:
+    """A velocity of ``velocity`` lengths per duration, in m/s.
+
+    ``length`` is the length unit in metres and ``duration`` the time unit in seconds (a foot
+    per minute for the rescaled Fig. 2.2); the claim's unit converts the result to ft/s or mph.
+    """
+    inputs.real(velocity, "velocity")
+    inputs.positive(length, "length")
+    inputs.positive(duration, "duration")
+    return velocity * length / duration

@@ -1,7 +1,8 @@
 """Laws of the one-dimensional collision (mechmodel.collisions): chapters 2-4.
 
 Floats are compared within 1e-12 of the sum of the magnitudes involved; Fraction inputs must
-give exact equality.
+give exact equality. Chapter 2 adds Galilean frames and reversal (Figs. 2.3-2.5), chapter 3
+the energy ellipses, the Ka-whump on a reduced ellipse and the tensor forms (3.9)-(3.14).
 """
 
 from __future__ import annotations
@@ -10,9 +11,15 @@ import math
 from fractions import Fraction
 
 import pytest
-from hypothesis import example, given, target
+from hypothesis import assume, example, given, target
 
 from checks.properties.strategies import (
+    angles,
+    exact_masses,
+    exact_restitutions,
+    exact_symmetric_matrices,
+    exact_velocities,
+    exact_velocity_pairs,
     fraction_masses,
     fraction_restitutions,
     fraction_velocities,
@@ -20,10 +27,36 @@ from checks.properties.strategies import (
     restitutions,
     velocities,
 )
-from mechmodel.collisions import center_of_mass_velocity, collide
+from mechmodel.collisions import (
+    center_of_mass_velocity,
+    collide,
+    collide_in_frame,
+    collide_reversed,
+    collide_to_energy,
+    collision_tensor_forms,
+    com_frame,
+    ellipse_point,
+    ellipse_radii,
+    energy_ellipse,
+    inertia_tensor,
+    kinetic_energy,
+    line_angle,
+    line_slope,
+    momentum,
+    momentum_change,
+    momentum_exchange_step,
+    momentum_line_partner,
+    momentum_line_slope,
+    quadratic_form,
+    shift_frame,
+    tensor_energy_forms,
+    time_reversed,
+    velocity_reversed,
+)
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
+FLOOR = 1e-300  # below this, subnormal products carry no relative precision: an absolute floor
 
 
 @given(masses(), masses(), velocities(), velocities(), restitutions())
@@ -38,7 +71,7 @@ def test_momentum_is_conserved_for_any_restitution(
     scale = abs(m1 * v1) + abs(m2 * v2) + abs(m1 * hit.v1) + abs(m2 * hit.v2)
     error = abs(hit.momentum - before)
     target(error / scale if scale else 0.0, label="relative momentum error")
-    assert error <= REL * scale
+    assert error <= REL * scale + FLOOR
 
 
 @given(
@@ -119,3 +152,282 @@ def test_a_wall_keeps_its_velocity(u: float, v: float, e: float, m: float) -> No
     hit = collide(math.inf, m, u, v, e)
     assert hit.v1 == u
     assert math.isclose(hit.v2, u + e * (u - v), rel_tol=REL, abs_tol=REL * (abs(u) + abs(v)))
+
+
+def close(a: float, b: float, scale: float) -> bool:
+    """a and b agree within REL of ``scale``, the sum of the magnitudes involved (or FLOOR)."""
+    return abs(a - b) <= REL * scale + FLOOR
+
+
+def F(*values: int) -> tuple[Fraction, ...]:
+    """Exact book values for @example."""
+    return tuple(Fraction(v) for v in values)
+
+
+# -- Galilean frames (Figs. 2.3-2.5) ----------------------------------------------------------
+
+
+@given(
+    exact_masses(),
+    exact_masses(),
+    exact_velocities(),
+    exact_velocities(),
+    exact_velocities(),
+    exact_restitutions(),
+)
+@example(*F(4, 1, 60, 10, 50, 1))  # the cop frame of Fig. 2.4
+def test_a_collision_is_galilean_covariant_exactly(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, u: Fraction, e: Fraction
+) -> None:
+    """Shifting every velocity by -u before colliding equals shifting the result by -u: the
+    frame view is the Earth view slid down the 45° line (Galilean relativity, Fig. 2.5)."""
+    hit = collide(m1, m2, v1, v2, e)
+    seen = collide_in_frame(m1, m2, v1, v2, u, e)
+    assert seen.after == collide(m1, m2, v1 - u, v2 - u, e).after == shift_frame(hit.after, u)
+    assert seen.before == shift_frame(hit.before, u)
+
+
+@given(masses(), masses(), velocities(), velocities(), velocities(), restitutions())
+def test_a_collision_is_galilean_covariant(
+    m1: float, m2: float, v1: float, v2: float, u: float, e: float
+) -> None:
+    """The float collision commutes with a frame shift v -> v + u to rounding error (Fig. 2.5)."""
+    shifted_first = collide(m1, m2, v1 + u, v2 + u, e)
+    hit = collide(m1, m2, v1, v2, e)
+    scale = abs(v1) + abs(v2) + 2 * abs(u) + abs(hit.v1) + abs(hit.v2)
+    assert close(shifted_first.v1, hit.v1 + u, scale)
+    assert close(shifted_first.v2, hit.v2 + u, scale)
+
+
+@given(
+    exact_masses(),
+    exact_masses(),
+    exact_velocities(),
+    exact_velocities(),
+    exact_velocities(),
+    exact_restitutions(),
+)
+@example(*F(4, 1, 60, 10, 50, 0))  # 1,000 lost in the Earth and the COM frame
+def test_the_energy_lost_is_the_same_in_every_frame(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, u: Fraction, e: Fraction
+) -> None:
+    """The crunch energy is frame independent: 1,000 units in the Earth frame and in the COM
+    frame for the SUV/VW Ka-runch (line 2415: Galilean symmetry of the "cost" of damage)."""
+    assert collide_in_frame(m1, m2, v1, v2, u, e).ke_lost == collide(m1, m2, v1, v2, e).ke_lost
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities())
+@example(*F(4, 1, 60, 10))  # ECOM = 1,000 of (3.8)
+def test_the_com_frame_holds_no_momentum_and_the_ka_runch_energy(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """In the COM frame P = 0 and the kinetic energy, 1/2 mu (v1 - v2)^2, is KE - IE: all a
+    Ka-runch can lose (ECOM = 7,250 - 6,250 = 1,000 of (3.8))."""
+    frame = com_frame(m1, m2, v1, v2)
+    assert momentum((m1, m2), frame.velocities) == 0
+    assert frame.energy == m1 * m2 / (m1 + m2) * (v1 - v2) ** 2 / 2
+    assert frame.energy == collide(m1, m2, v1, v2, 0).ke_lost
+
+
+# -- reversal (Figs. 2.2-2.4) ---------------------------------------------------------------
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities())
+@example(*F(4, 1, 10, -40))  # the cop-frame Ka-bong of Fig. 2.4
+def test_an_elastic_collision_is_time_reversible_exactly(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """Reversing the outgoing velocities and colliding again gives back the reversed incoming
+    ones: the reversed video of an elastic bump is an ordinary bump (Figs. 2.2 and 2.4)."""
+    back = time_reversed(collide(m1, m2, v1, v2, 1))
+    assert collide(m1, m2, *back.before, 1).after == back.after == (-v1, -v2)
+
+
+@given(masses(), masses(), velocities(), velocities())
+def test_an_elastic_collision_is_time_reversible(
+    m1: float, m2: float, v1: float, v2: float
+) -> None:
+    """The float elastic collision reverses to rounding error (Fig. 2.4)."""
+    hit = collide(m1, m2, v1, v2)
+    again = collide(m1, m2, -hit.v1, -hit.v2)
+    scale = 2 * (abs(v1) + abs(v2) + abs(hit.v1) + abs(hit.v2))
+    assert close(again.v1, -v1, scale)
+    assert close(again.v2, -v2, scale)
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_restitutions())
+@example(*F(4, 1, 60, 10, 0))  # the Ka-runch of Fig. 2.1
+def test_an_inelastic_collision_does_not_reverse(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, e: Fraction
+) -> None:
+    """With e < 1 and a relative velocity, colliding the reversed outgoing velocities does not
+    give back the reversed incoming ones: no "un-crash" (Fig. 2.1, line 1996)."""
+    assume(e < 1 and v1 != v2)
+    hit = collide(m1, m2, v1, v2, e)
+    assert collide(m1, m2, -hit.v1, -hit.v2, e).after != (-v1, -v2)
+
+
+@given(
+    exact_masses(),
+    exact_masses(),
+    exact_velocities(),
+    exact_velocities(),
+    exact_velocities(),
+    exact_restitutions(),
+)
+@example(*F(4, 1, 60, 10, 50, 1))  # (-10, 40) -> (10, -40), line 2041
+def test_reversed_velocities_collide_into_reversed_results(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, u: Fraction, e: Fraction
+) -> None:
+    """Reflecting IN through the COM point (V -> -V) reflects FIN too, for any restitution: the
+    reversed cop-frame Ka-bong (-10, 40) -> (10, -40) of line 2041."""
+    forward = collide_in_frame(m1, m2, v1, v2, u, e)
+    assert collide_reversed(m1, m2, v1, v2, u, e) == velocity_reversed(forward)
+
+
+# -- the momentum line (Figs. 2.1, 2.6, (2.4), (3.6)) ----------------------------------------
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_restitutions())
+@example(*F(4, 1, 60, 10, 0))  # slope -4/1 of Fig. 2.1
+def test_a_collision_moves_along_the_momentum_line(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, e: Fraction
+) -> None:
+    """IN -> FIN keeps Delta P_Total = 0 (2.3) and has slope Delta V2/Delta V1 = -m1/m2 (2.4),
+    the direction of the zero-sum step (-m2, m1) (the -1:4 of Fig. 2.6a)."""
+    assume(v1 != v2)
+    hit = collide(m1, m2, v1, v2, e)
+    assert momentum_change((m1, m2), hit.before, hit.after) == 0
+    d1, d2 = momentum_exchange_step(m1, m2)
+    assert m1 * d1 + m2 * d2 == 0
+    assert (hit.v2 - v2) / (hit.v1 - v1) == d2 / d1 == momentum_line_slope(m1, m2)
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_velocities())
+@example(*F(4, 1, 60, 10, 70))  # (70, -30) of Fig. 2.6a
+def test_every_point_of_the_momentum_line_has_the_same_weighted_average(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, u1: Fraction
+) -> None:
+    """The m1:m2-weighted average of each point of the momentum line is V_COM (2.5b): (40,90),
+    (50,50), (60,10), (70,-30) all average 50 with weights 4:1 (Fig. 2.6a)."""
+    u2 = momentum_line_partner(m1, m2, v1, v2, u1)
+    average = center_of_mass_velocity((m1, m2), (v1, v2))
+    assert center_of_mass_velocity((m1, m2), (u1, u2)) == average
+
+
+@given(velocities())
+def test_line_angle_and_slope_are_inverse(slope: float) -> None:
+    """tan(atan(s)) = s: the 45° line has slope 1 (Fig. 2.1, line 2420)."""
+    assert math.isclose(line_slope(line_angle(slope)), slope, rel_tol=REL, abs_tol=FLOOR)
+
+
+# -- energy ellipses (Fig. 3.1, (3.7), Exercise Figs. 3.6-3.7) ------------------------------
+
+
+@given(masses(), masses(), velocities(), velocities(), angles())
+@example(4.0, 1.0, 60.0, 10.0, 0.0)  # the KE = 7,250 ellipse of Fig. 3.1
+def test_the_ellipse_radii_and_points_satisfy_the_energy_equation(
+    m1: float, m2: float, v1: float, v2: float, angle: float
+) -> None:
+    """The radii (a, b) = (sqrt(2KE/m1), sqrt(2KE/m2)) of (3.7b) give 1/2 m1 a^2 = 1/2 m2 b^2
+    = KE, and every (a cos s, b sin s) (Exercise Fig. 3.7) has that KE."""
+    ke = kinetic_energy((m1, m2), (v1, v2))
+    a, b = ellipse_radii(m1, m2, ke)
+    assert energy_ellipse(m1, m2, v1, v2).radii == (a, b)
+    assert close(m1 * a * a / 2, ke, ke)
+    assert close(m2 * b * b / 2, ke, ke)
+    assume(ke > 0)
+    x, y = ellipse_point(a, b, angle)
+    assert close(kinetic_energy((m1, m2), (x, y)), ke, 4 * ke)
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities())
+@example(*F(4, 1, 60, 10))  # slope -4 at (50, 50), slope 1 on the ECOM(10, 40) ellipse
+def test_the_tangents_of_fig_3_1_are_dual(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """The ellipse through the COM point (V, V) is tangent there to the momentum line (slope
+    -m1/m2), and the COM-frame ellipse is tangent to the 45° COM line (slope 1) where the
+    momentum line cuts it (Fig. 3.1, lines 2419-2421)."""
+    assume(v1 != v2)
+    v = center_of_mass_velocity((m1, m2), (v1, v2))
+    if v != 0:
+        ellipse = energy_ellipse(m1, m2, v, v)
+        assert ellipse.tangent_slope == ellipse.momentum_slope == -m1 / m2
+    assert com_frame(m1, m2, v1, v2).ellipse.tangent_slope == 1
+
+
+# -- the Ka-whump on a reduced ellipse (Fig. 3.2) --------------------------------------------
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_restitutions())
+@example(*F(6, 1, 3, -4), Fraction(2, 3))  # Fig. 3.2b: E_whump = 23 1/3, E_loss = 11 2/3
+def test_the_reduced_ellipse_gives_back_the_restitution_exactly(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, e: Fraction
+) -> None:
+    """A collision of restitution e ends on the ellipse IE + e^2 ECOM; collide_to_energy on that
+    ellipse recovers e and the same FIN point, and loses (1 - e^2) ECOM (Fig. 3.2)."""
+    assume(v1 != v2)
+    hit = collide(m1, m2, v1, v2, e)
+    whump = collide_to_energy(m1, m2, v1, v2, hit.ke_after)
+    assert whump.restitution == e
+    assert whump.rebound == hit
+    assert whump.ke_lost == (1 - e * e) * com_frame(m1, m2, v1, v2).energy
+
+
+@given(masses(), masses(), velocities(), velocities(), restitutions())
+def test_both_ka_whump_points_lie_on_the_momentum_line_and_the_reduced_ellipse(
+    m1: float, m2: float, v1: float, v2: float, share: float
+) -> None:
+    """The momentum line cuts the reduced ellipse at F_whump (rebound) and F_pass-thru: both
+    keep P_Total and both have the chosen energy (Fig. 3.2b, line 2433)."""
+    frame = com_frame(m1, m2, v1, v2)
+    assume(frame.energy > 0)
+    kept = kinetic_energy((m1, m2), (frame.com_velocity, frame.com_velocity))
+    energy = kept + share * frame.energy
+    whump = collide_to_energy(m1, m2, v1, v2, energy)
+    assert 0 <= whump.restitution <= 1
+    p = abs(m1 * v1) + abs(m2 * v2)
+    for end in (whump.rebound, whump.pass_through):
+        scale = p + abs(m1 * end.v1) + abs(m2 * end.v2)
+        assert close(end.momentum, m1 * v1 + m2 * v2, scale)
+        assert close(end.ke_after, energy, 4 * whump.ke_before)
+
+
+# -- tensor forms ((3.9)-(3.14)) -------------------------------------------------------------
+
+
+@given(exact_symmetric_matrices(), exact_velocity_pairs(), exact_velocity_pairs())
+def test_line_one_of_3_12a_holds_for_any_symmetric_inertia(
+    inertia: tuple[tuple[Fraction, ...], ...],
+    v_in: tuple[Fraction, Fraction],
+    v_fin: tuple[Fraction, Fraction],
+) -> None:
+    """With V_COM = (V_IN + V_FIN)/2 (3.4) and M_jk = M_kj, V_FIN.M.V_IN = V_IN.M.V_FIN and
+    V_COM.M.V_IN - V_FIN.M.V_IN/2 = V_IN.M.V_IN/2 (3.12a): transpose symmetry is what makes
+    the energy form work."""
+    v_com = tuple((a + b) / 2 for a, b in zip(v_in, v_fin, strict=True))
+    forms = tensor_energy_forms(inertia, v_in, v_fin, v_com)
+    assert forms.cross == forms.cross_transposed
+    assert forms.ke_from_com == forms.ke_in
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities())
+@example(*F(4, 1, 60, 10))  # 12,500, 10,500, 7,250, 6,250 = 3,625 + 2,625, 1,000
+def test_the_tensor_forms_of_an_elastic_collision(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """With the diagonal M of (3.9a), V.M.V = 2 KE and (1, 1).M.V = P; for an elastic collision
+    KE is the same at IN and FIN (3.12c), V_COM P/2 = IE = quarter_in + quarter_cross (3.13),
+    and KE - IE = quarter_in - quarter_cross = ECOM (3.14)."""
+    inertia = inertia_tensor((m1, m2))
+    assert quadratic_form((v1, v2), inertia, (v1, v2)) == 2 * kinetic_energy((m1, m2), (v1, v2))
+    assert quadratic_form((1, 1), inertia, (v1, v2)) == momentum((m1, m2), (v1, v2))
+    hit = collide(m1, m2, v1, v2, 1)
+    v = center_of_mass_velocity((m1, m2), (v1, v2))
+    forms = tensor_energy_forms(inertia, hit.before, hit.after, (v, v))
+    assert collision_tensor_forms(m1, m2, v1, v2, 1) == forms
+    assert forms.ke_in == forms.ke_fin == hit.ke_before
+    assert forms.com_momentum == forms.com_momentum_fin == v * momentum((m1, m2), (v1, v2))
+    assert forms.half_com_momentum == forms.ie == forms.quarter_in + forms.quarter_cross
+    assert forms.crunch == hit.ke_before - forms.ie == com_frame(m1, m2, v1, v2).energy
