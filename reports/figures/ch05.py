@@ -5,14 +5,35 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from mechmodel.bangs import ceiling_sequence
+from mechmodel.bangs import bang_history, ceiling_sequence, floor_bounce
 from mechmodel.collisions import kinetic_energy
+from mechmodel.operators import (
+    apply,
+    bang_angle,
+    integral_right_triangle,
+    mass_scaling,
+    matrix_product,
+    mirror_angle,
+    mirror_pair_rotation,
+    reflection,
+    rotation_angle,
+    scaled_collision_matrix,
+    scaled_double_bang_matrix,
+    sigma,
+)
 from reports.figures import ellipse_points, figure, value_of
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
     from reference.evaluation import EvaluatedClaim
+
+# The book prints no heights for Fig. 5.1(b): the balls start stacked on the floor (the X2
+# launcher of Fig. 4.3a) under a ceiling at unit height, which only sets the scale.
+CEILING = 1
+# A non-symmetric flag to show what mirrors and rotations do to it (Fig. 5.3).
+FLAG = ((0.45, 0.1), (0.95, 0.1), (0.95, 0.26), (0.62, 0.26), (0.62, 0.42), (0.45, 0.42))
 
 
 @figure(
@@ -52,3 +73,208 @@ def _bang_sequence(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.set_xlabel("v1 (big ball)")
     ax.set_ylabel("v2 (little ball)")
     ax.legend(loc="upper right", fontsize="small")
+
+
+@figure(
+    "bang-history-49-1",
+    "Fig. 5.1(b)",
+    "Heights against time of the 49:1 pair from the event simulator: the balls start stacked "
+    "on the floor after Bang-1 (velocities (1, -1)), under a ceiling at unit height (the book "
+    "prints no heights: scale arbitrary), with the floor open after Bang-1. Little m2 rattles "
+    "between m1 and the ceiling and turns m1 back; after Bang-21 both fall, and the last bang "
+    "(off the plot) comes long after.",
+    (
+        "ch05.pair-49-1.v1-after-9",
+        "ch05.pair-49-1.v1-after-11",
+        "ch05.pair-49-1.v2-after-11",
+        "ch05.pair-49-1.game-over",
+    ),
+)
+def _history_49_1(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    m1, m2 = value_of(claims, "ch05.pair-49-1.m1"), value_of(claims, "ch05.pair-49-1.m2")
+    v1, v2 = (
+        value_of(claims, "ch05.pair-49-1.v1-start"),
+        value_of(claims, "ch05.pair-49-1.v2-start"),
+    )
+    # start just before Bang-1, the floor bounce, so that the numbering is the book's
+    h = bang_history(m1, m2, 0, 0, floor_bounce(v1), v2, ceiling=CEILING, floor_bounces=1)
+    shown = [e for e in h.bangs if e.y1 > -CEILING]
+    end = shown[-1].time * 1.04
+    times = [0, *(e.time for e in shown), end]
+    paths = [h.positions_at(t) for t in times]
+    ax = fig.add_subplot()
+    ax.axhline(CEILING, color="0.6", lw=3, label="ceiling")
+    ax.axhline(0, color="0.3", lw=1.5, ls="--", label="floor (open after Bang-1)")
+    ax.plot(times, [p[0] for p in paths], color="C0", lw=2, label=f"y1 (m1 = {m1:g})")
+    ax.plot(times, [p[1] for p in paths], color="C1", lw=0.9, label=f"y2 (m2 = {m2:g})")
+    for e in shown:
+        if e.kind == "12" and e.number % 4 == 0:
+            ax.annotate(
+                str(e.number),
+                (e.time, e.y1),
+                textcoords="offset points",
+                xytext=(-3, -12),
+                fontsize="x-small",
+            )
+    last = h.bangs[-1]
+    ax.text(
+        0.02,
+        0.04,
+        f"last bang: Bang-{last.number} at t = {last.time:.3g}, y = {last.y1:.3g}",
+        transform=ax.transAxes,
+        fontsize="x-small",
+    )
+    ax.set_xlabel("time (ceiling heights per unit velocity)")
+    ax.set_ylabel("height (ceiling = 1)")
+    ax.legend(loc="lower right", fontsize="x-small")
+
+
+def _hand(ax: Axes, v: tuple[float, float], label: str, colour: str) -> None:
+    ax.annotate("", v, (0, 0), arrowprops={"arrowstyle": "->", "color": colour, "lw": 1.2})
+    ax.annotate(label, v, textcoords="offset points", xytext=(3, -9), fontsize="x-small")
+
+
+@figure(
+    "velocity-clock-49-1",
+    "Fig. 5.2(b)-(c)",
+    "Left: the 49:1 sequence of Fig. 5.1 in mass-scaled velocities V = (v1 √m1, v2 √m2), where "
+    "the energy ellipse is a circle; a ball bang reflects V in the collision line (angle θ/2), "
+    "a ceiling bang in the V1 axis, so each double bang turns the clock hand by -θ. Right: "
+    "the bang triangle with base m1 - m2, altitude 2√(m1 m2) and hypotenuse m1 + m2 that "
+    "defines θ.",
+    (
+        "ch05.pair-49-1.theta",
+        "ch05.pair-49-1.double-bang-angle",
+        "ch05.pair-49-1.n-theta",
+        "ch05.triangle-49-1.base",
+        "ch05.triangle-49-1.altitude",
+        "ch05.triangle-49-1.hypotenuse",
+    ),
+)
+def _velocity_clock(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    m1, m2 = value_of(claims, "ch05.pair-49-1.m1"), value_of(claims, "ch05.pair-49-1.m2")
+    start = (
+        value_of(claims, "ch05.pair-49-1.v1-start"),
+        value_of(claims, "ch05.pair-49-1.v2-start"),
+    )
+    left, right = fig.subplots(1, 2)
+    _clock(left, m1, m2, start, int(value_of(claims, "ch05.pair-49-1.n")))
+    _bang_triangle(right, m1, m2)
+    fig.tight_layout()
+
+
+def _clock(ax: Axes, m1: float, m2: float, start: tuple[float, float], n: int) -> None:
+    """Fig. 5.2(b): the states of ``ceiling_sequence`` as hands of the V-space clock."""
+    scale = mass_scaling(m1, m2)
+    states = [apply(scale, v) for v in ceiling_sequence(m1, m2, *start).velocities]
+    radius = math.hypot(*states[0])
+    ax.plot(*ellipse_points(radius, radius), color="0.75")
+    ax.plot([s[0] for s in states], [s[1] for s in states], "-", color="0.55", lw=0.7)
+    mirror = mirror_angle(scaled_collision_matrix(m1, m2))
+    c, s = radius * math.cos(mirror), radius * math.sin(mirror)
+    ax.plot([-c, c], [-s, s], "--", color="C3", lw=1, label="collision line v1 = v2")
+    for k in range(0, len(states), 2):  # after Bang-1, 3, 5, ...: the clock hands
+        _hand(ax, states[k], f"{k + 1}" if k % 4 == 0 and k != 8 else "", "C0")
+    power = scaled_double_bang_matrix(m1, m2, n)
+    turned = apply(power, states[0])
+    ax.annotate("", turned, (0, 0), arrowprops={"arrowstyle": "->", "color": "C2", "lw": 2})
+    ax.plot(
+        [],
+        [],
+        color="C2",
+        label=f"(CM)^{n}: hand 1 turned {math.degrees(rotation_angle(power)):.2f}°",
+    )
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.15 * radius, 1.15 * radius)
+    ax.set_ylim(-1.15 * radius, 1.15 * radius)
+    ax.set_xlabel("V1 = v1 √m1")
+    ax.set_ylabel("V2 = v2 √m2")
+    turn = math.degrees(rotation_angle(scaled_double_bang_matrix(m1, m2)))
+    ax.set_title(f"each double bang CM turns by {turn:.2f}°", fontsize="small")
+    ax.legend(loc="upper left", fontsize="x-small")
+
+
+def _bang_triangle(ax: Axes, m1: float, m2: float) -> None:
+    """Fig. 5.2(c), (f): the right triangle of the bang angle, sides scaled by M = m1 + m2."""
+    t = integral_right_triangle(m1, m2)
+    theta = math.degrees(bang_angle(m1, m2).angle)
+    ax.fill([0, t.base, t.base], [0, 0, t.altitude], color="C0", alpha=0.2)
+    ax.plot([0, t.base, t.base, 0], [0, 0, t.altitude, 0], color="C0")
+    labels = (
+        (f"m1 - m2 = {t.base:g}", (t.base / 2, 0), (0, -12), "center", 0),
+        (f"2√(m1 m2) = {t.altitude:g}", (t.base, t.altitude / 2), (-4, 0), "right", 0),
+        (f"m1 + m2 = {t.hypotenuse:g}", (t.base / 2, t.altitude / 2), (-8, 8), "right", theta),
+        (f"θ = {theta:.2f}°", (0, 0), (22, 1), "left", 0),
+    )
+    for text, xy, offset, ha, rotation in labels:
+        ax.annotate(
+            text,
+            xy,
+            textcoords="offset points",
+            xytext=offset,
+            ha=ha,
+            rotation=rotation,
+            fontsize="x-small",
+        )
+    ax.set_aspect("equal")
+    ax.set_ylim(-t.altitude * 0.6, t.altitude * 1.3)
+    ax.axis("off")
+    ax.set_title("bang triangle: cos θ = (m1 - m2)/M", fontsize="small")
+
+
+def _flag(ax: Axes, matrix: object, colour: str, label: str, style: str = "-") -> None:
+    points = [apply(matrix, p) for p in (*FLAG, FLAG[0])]
+    ax.fill([p[0] for p in points], [p[1] for p in points], color=colour, alpha=0.35)
+    ax.plot([p[0] for p in points], [p[1] for p in points], style, color=colour, label=label)
+
+
+def _mirror(ax: Axes, angle: float, colour: str, label: str | None = None) -> None:
+    c, s = math.cos(angle), math.sin(angle)
+    ax.plot([-1.1 * c, 1.1 * c], [-1.1 * s, 1.1 * s], ":", color=colour, lw=1.2, label=label)
+
+
+def _mirror_axes(ax: Axes, title: str) -> None:
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.15, 1.15)
+    ax.set_ylim(-1.15, 1.15)
+    ax.set_xticks([])
+    ax.set_yticks([])
+    ax.set_title(title, fontsize="small")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0), fontsize="x-small", ncols=2)
+
+
+@figure(
+    "mirrors-and-rotations",
+    "Fig. 5.3",
+    "Left: a flag and its mirror images under ±σA (mirrors along the x and y axes) and ±σB "
+    "(mirrors at ±π/4), each mirror dotted in its image's colour. Right: two mirrors, σA and "
+    "σφ tilted at φ/2 (here the 60° of the clothing-store mirrors, Fig. 5.4a): the products "
+    "σφσA and σAσφ are rotations by +φ and -φ, not reflections.",
+    (
+        "ch05.sigma-b.mirror-angle",
+        "ch05.minus-sigma-b.mirror-angle",
+        "ch05.mirrors.rotation-ccw",
+        "ch05.mirrors.rotation-cw",
+    ),
+)
+def _mirrors(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    left, right = fig.subplots(1, 2)
+    _flag(left, sigma("0"), "k", "flag")
+    for k, name in enumerate(("A", "-A", "B", "-B")):
+        m = sigma(name)
+        _flag(left, m, f"C{k}", f"{'-' if name[0] == '-' else '+'}σ{name[-1]}")
+        _mirror(left, mirror_angle(m), f"C{k}")
+    _mirror_axes(left, "reflections ±σA, ±σB")
+    half = math.radians(value_of(claims, "ch05.mirrors.angle-60"))
+    s_a, s_phi = sigma("A"), reflection(2 * half)
+    _flag(right, sigma("0"), "k", "flag")
+    for m, name, colour in (
+        (matrix_product(s_phi, s_a), "σφσA", "C2"),
+        (matrix_product(s_a, s_phi), "σAσφ", "C3"),
+    ):
+        _flag(right, m, colour, f"{name}: {math.degrees(rotation_angle(m)):+.0f}°")
+    _mirror(right, mirror_angle(s_a), "C0", "σA mirror")
+    _mirror(right, mirror_angle(s_phi), "C1", f"σφ mirror at φ/2 = {math.degrees(half):g}°")
+    turn = math.degrees(mirror_pair_rotation(0, half))
+    _mirror_axes(right, f"rotations: mirrors {math.degrees(half):g}° apart turn by {turn:+.0f}°")
+    fig.tight_layout()
