@@ -23,7 +23,7 @@ from reference.evaluation import EvaluatedClaim, Evaluation
 from reference.locate import matches, pick_occurrence
 from reference.scan import ScanResult
 from reference.tokens import tokenize_line
-from reports.figures import render_all, verdict_chart
+from reports.figures import RenderedFigure, render_all, verdict_chart
 from reports.output import claims_json, errata_csv
 
 EXAMPLES_PER_RULE = 3
@@ -82,7 +82,7 @@ def model_call(claim: EvaluatedClaim, values: dict[str, EvaluatedClaim]) -> str:
     return f"{call}.{claim.pick}" if claim.pick else call
 
 
-def _errata_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
+def errata_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
     rows = []
     for c in evaluation:
         if c.verdict != "erratum":
@@ -144,7 +144,7 @@ def _exclusion_examples(book: Book, scan: ScanResult) -> dict[str, list[dict[str
     }
 
 
-def _meta(evaluation: Evaluation, scan: ScanResult) -> dict[str, Any]:
+def report_meta(evaluation: Evaluation, scan: ScanResult) -> dict[str, Any]:
     counts = evaluation.verdict_counts()
     return {
         "bangcheck": bangcheck_version(),
@@ -176,9 +176,14 @@ def _environment() -> Environment:
 
 
 def render_page(
-    evaluation: Evaluation, scan: ScanResult, catalog: Catalog, properties: Path | None
+    evaluation: Evaluation,
+    scan: ScanResult,
+    catalog: Catalog,
+    properties: Path | None,
+    figures: list[RenderedFigure] | None = None,
 ) -> str:
-    """The report page as one HTML string."""
+    """The report page as one HTML string; ``figures`` already rendered, or None to render
+    every registered figure."""
     book = evaluation.book
     values = evaluation.by_id()
     titles = {c.key: c.title for c in book.identity.chapters}
@@ -207,7 +212,7 @@ def render_page(
     slips = [s for f in catalog.files for s in f.slips]
     template = _environment().get_template("index.html.j2")
     return template.render(
-        meta=_meta(evaluation, scan),
+        meta=report_meta(evaluation, scan),
         verdicts=VERDICTS,
         present=[v for v in VERDICTS if any(c.verdict == v for c in evaluation)],
         per_chapter=per_chapter,
@@ -216,7 +221,7 @@ def render_page(
         coverage=_coverage(scan),
         errata=errata,
         chapters=chapters,
-        figures=render_all(evaluation),
+        figures=render_all(evaluation) if figures is None else figures,
         unmodeled=[c for c in evaluation if c.verdict == "unmodeled"],
         properties=_properties(properties),
         slips=slips,
@@ -237,6 +242,8 @@ def build_report(
     """The report's files by name: ``index.html``, ``errata.csv``, ``claims.json``."""
     return {
         "index.html": render_page(evaluation, scan, catalog, properties),
-        "errata.csv": errata_csv(_errata_rows(evaluation)),
-        "claims.json": claims_json(_meta(evaluation, scan), [c.to_json() for c in evaluation]),
+        "errata.csv": errata_csv(errata_rows(evaluation)),
+        "claims.json": claims_json(
+            report_meta(evaluation, scan), [c.to_json() for c in evaluation]
+        ),
     }
