@@ -1,0 +1,337 @@
+"""Laws of the common potential fields (mechmodel.fields): chapter 9.
+
+Floats are compared within 1e-12 of the sum of the magnitudes involved (a few ulps more where a
+square root or a trigonometric function of a large phase intervenes, as said); Fraction inputs
+must give exact equality.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+from hypothesis import assume, example, given, target
+
+from checks.properties.strategies import (
+    chord_offsets,
+    clock_hours,
+    clock_sizes,
+    fraction_coefficients,
+    oscillator_amplitudes,
+    oscillator_frequencies,
+    oscillator_times,
+    planet_radii,
+    radial_fractions,
+    slopes,
+    surface_gravities,
+)
+from mechmodel import fields
+
+pytestmark = pytest.mark.properties
+REL = 1e-12
+TRIG = 1e-9  # cos and sin of phases up to ~1e3 radians lose a few digits of the phase
+
+
+def close(a: float, b: float, scale: float, rel: float = REL) -> bool:
+    return abs(a - b) <= rel * scale
+
+
+# --- tunnels: every chord is the same 84-minute oscillator (Fig. 9.8) ------------------------
+
+
+@given(surface_gravities(), planet_radii(), chord_offsets())
+@example(9.8, 6.4e6, 0.0)  # the book's diameter tunnel to Australia
+def test_tunnel_period_does_not_depend_on_the_chord(g: float, radius: float, offset: float) -> None:
+    """Any straight tunnel through a uniform planet has the period 2 pi sqrt(R/g), whatever
+    its chord (Fig. 9.8: all motions inside the Earth have the same 84-minute period)."""
+    period = fields.chord_tunnel_period(g, radius, offset * radius)
+    expected = fields.tunnel_period(g, radius)
+    error = abs(period - expected) / expected
+    target(error, label="relative period error")
+    assert error <= 8 * REL
+
+
+@given(surface_gravities(), planet_radii(), chord_offsets(), radial_fractions())
+def test_chord_acceleration_is_harmonic(g: float, radius: float, offset: float, u: float) -> None:
+    """Along any chord the pull is -g s / R, proportional to the distance s from the chord's
+    middle (the projection of the linear field (9.4a) on the chord)."""
+    d = offset * radius
+    half = math.sqrt(radius * radius - d * d)
+    s = half * math.sin(u)  # a point of the chord, either side of its middle
+    acc = fields.chord_acceleration(g, radius, d, s)
+    assert close(acc, -g * s / radius, g * half / radius)
+
+
+@given(surface_gravities(), planet_radii(), chord_offsets(), oscillator_times())
+def test_chord_motion_conserves_energy(g: float, radius: float, offset: float, t: float) -> None:
+    """A body sliding through any chord keeps v^2/2 + U(r) constant, with the parabolic
+    interior potential of Fig. 9.7 ((9.5): E = KE + PE = const.)."""
+    d = offset * radius
+    period = fields.tunnel_period(g, radius)
+    s, v = fields.chord_tunnel_position(g, radius, d, t * period / 10)
+    energy = v * v / 2 + fields.gravity_potential(g, radius, math.hypot(d, s))
+    start = fields.gravity_potential(g, radius, radius)  # at rest at the chord's end
+    scale = 3 * g * radius
+    target(abs(energy - start) / scale, label="relative energy error")
+    assert close(energy, start, scale, TRIG)
+
+
+@given(surface_gravities(), planet_radii(), oscillator_times())
+def test_tunnel_keeps_pace_with_the_grazing_orbit(g: float, radius: float, t: float) -> None:
+    """A body dropped through the diameter tunnel always has the x of the satellite in the
+    grazing circular orbit (speed sqrt(gR), (9.7b)): they meet on the far side (Fig. 9.8)."""
+    omega = fields.circular_orbit_speed(g, radius) / radius
+    time = t * fields.tunnel_period(g, radius) / 10
+    s, _ = fields.chord_tunnel_position(g, radius, 0.0, time)
+    assert close(s, radius * math.cos(omega * time), radius, TRIG)
+
+
+@given(surface_gravities(), planet_radii())
+def test_orbit_covers_half_a_turn_while_the_tunnel_is_crossed(g: float, radius: float) -> None:
+    """The tunnel transit time is half the period of the grazing orbit (Fig. 9.8: they meet
+    1/2-way around)."""
+    assert close(fields.orbit_meeting_fraction(g, radius), 0.5, 1.0, 4 * REL)
+
+
+# --- the uniform Earth's field and potential, inside and out (9.4), Fig. 9.7 -----------------
+
+
+@given(surface_gravities(), planet_radii())
+def test_field_and_potential_are_continuous_at_the_surface(g: float, radius: float) -> None:
+    """Inside and outside formulas meet at the surface: the field is -g on both sides and the
+    potential -gR (Fig. 9.7: UIN(1) = -1 = UEX(1), FIN(1) = -1 = FEX(1))."""
+    just_out = math.nextafter(radius, math.inf)
+    inside_f = fields.gravity_field(g, radius, radius)
+    outside_f = fields.gravity_field(g, radius, just_out)
+    inside_u = fields.gravity_potential(g, radius, radius)
+    outside_u = fields.gravity_potential(g, radius, just_out)
+    assert close(inside_f, -g, g)
+    assert close(outside_f, -g, g, 4 * REL)
+    assert close(inside_u, -g * radius, g * radius)
+    assert close(outside_u, -g * radius, g * radius)
+
+
+@given(surface_gravities(), planet_radii(), radial_fractions())
+def test_field_is_minus_the_slope_of_the_potential(g: float, radius: float, x: float) -> None:
+    """F = -dU/dr inside and outside (Force = -Slope, (6.9); (9.2b)), by a central difference."""
+    assume(abs(x - 1) > 1e-3 and x > 1e-3)
+    r = x * radius
+    h = 1e-6 * radius
+    slope = (
+        fields.gravity_potential(g, radius, r + h) - fields.gravity_potential(g, radius, r - h)
+    ) / (2 * h)
+    assert close(-slope, fields.gravity_field(g, radius, r), g, 1e-6)
+
+
+@given(surface_gravities(), planet_radii(), radial_fractions())
+def test_the_field_inside_is_linear_and_outside_inverse_square(
+    g: float, radius: float, x: float
+) -> None:
+    """Inside only the mass within r pulls, M(r) = M r^3/R^3, so F = -g r/R (9.4a); outside the
+    whole mass pulls as from the centre, F = -g R^2/r^2."""
+    assume(x > 1e-3)
+    r = x * radius
+    enclosed = min(x, 1.0) ** 3  # fraction of the planet's mass within r
+    expected = -g * enclosed / (x * x)
+    assert close(fields.gravity_field(g, radius, r), expected, g * (1 + enclosed / x**2))
+
+
+@given(fraction_coefficients())
+@example(Fraction(1))  # the Earth of Fig. 9.7, in Earth radii
+def test_interior_potential_meets_the_exterior_exactly(surface: Fraction) -> None:
+    """The parabola inside meets -1/x at the surface with the same slope (Fig. 9.7, GM = 1)."""
+    pot = fields.interior_potential(surface)
+    assert pot.surface_potential == -1 / surface
+    assert pot.surface_force == -1 / surface**2
+    assert pot.surface_slope == 1 / surface**2 == -pot.surface_force
+    assert pot.quadratic * surface**2 + pot.offset == pot.surface_potential
+
+
+@given(fraction_coefficients())
+def test_escape_takes_three_equal_steps(surface: Fraction) -> None:
+    """Centre to surface, surface to grazing orbit, orbit to escape: three equal steps of
+    GM/(2R), 1/2 mgR each ("Starlet escapes! (In 3 equal steps)", (9.11))."""
+    ladder = fields.escape_ladder(surface)
+    assert ladder.steps[0] == ladder.steps[1] == ladder.steps[2] == 1 / (2 * surface)
+    assert ladder.equal_steps == 3
+
+
+@given(surface_gravities(), planet_radii())
+def test_escape_speed_is_root_two_times_orbit_speed(g: float, radius: float) -> None:
+    """Ve = v0 sqrt(2) = sqrt(2gR) (9.11a): the kinetic energy of escape is twice the orbit's."""
+    speeds = fields.surface_speeds(g, radius)
+    assert close(speeds.escape, speeds.orbit * math.sqrt(2), speeds.escape, 4 * REL)
+    assert close(speeds.escape, fields.escape_speed_from_orbit_speed(speeds.orbit), speeds.escape)
+
+
+@given(surface_gravities(), planet_radii(), surface_gravities())
+def test_light_cannot_escape_from_the_black_hole_radius(g: float, mass: float, c: float) -> None:
+    """At R = 2GM/c^2 (9.12b) the escape speed sqrt(2GM/R) (9.11b) is c (9.12a)."""
+    big_g = 6.5e-11 * g  # any positive G
+    radius = fields.schwarzschild_radius(big_g, mass, c)
+    assert close(math.sqrt(2 * big_g * mass / radius), c, c, 4 * REL)
+
+
+@given(oscillator_frequencies(), oscillator_frequencies(), oscillator_frequencies())
+def test_shell_elements_cancel(solid_angle: float, near: float, far: float) -> None:
+    """The shell elements cut by a cone of sight pull equally and oppositely: m/d^2 = M/D^2
+    since both masses grow as distance squared (Fig. 9.6)."""
+    assert close(fields.shell_pair_pull(solid_angle, near, far), 0.0, 2 * solid_angle)
+
+
+# --- the starlet's orbits: the isotropic 2-D oscillator (9.8)-(9.15) -------------------------
+
+
+@given(
+    oscillator_frequencies(),
+    oscillator_amplitudes(),
+    oscillator_amplitudes(),
+    oscillator_times(),
+    oscillator_times(),
+    oscillator_times(),
+)
+def test_each_dimension_keeps_its_energy(
+    omega: float, ax: float, ay: float, px: float, py: float, t: float
+) -> None:
+    """ex = 1/2 m vx^2 + 1/2 k x^2 and ey are each constant (9.10), with k = m omega^2."""
+    start = fields.oscillator_orbit(omega, ax, ay, px, py, 0.0)
+    later = fields.oscillator_orbit(omega, ax, ay, px, py, t)
+    scale = omega * omega * (ax * ax + ay * ay) + 1e-300
+    error = abs(later.energy_x - start.energy_x) + abs(later.energy_y - start.energy_y)
+    target(error / scale, label="relative energy error")
+    assert error <= TRIG * scale
+    assert close(later.energy_x, omega * omega * ax * ax / 2, scale, TRIG)
+
+
+@given(
+    oscillator_frequencies(),
+    oscillator_amplitudes(),
+    oscillator_amplitudes(),
+    oscillator_times(),
+    oscillator_times(),
+    oscillator_times(),
+)
+def test_starlet_orbit_keeps_its_angular_momentum(
+    omega: float, ax: float, ay: float, px: float, py: float, t: float
+) -> None:
+    """The central force F = -kr (9.15) exerts no torque: x vy - y vx is constant, and equals
+    omega X Y sin(alpha_x - alpha_y)."""
+    start = fields.oscillator_orbit(omega, ax, ay, px, py, 0.0)
+    later = fields.oscillator_orbit(omega, ax, ay, px, py, t)
+    scale = omega * (ax * ax + ay * ay) + 1e-300
+    error = abs(later.angular_momentum - start.angular_momentum)
+    target(error / scale, label="relative angular momentum error")
+    assert error <= TRIG * scale
+    assert close(start.angular_momentum, omega * ax * ay * math.sin(px - py), scale, TRIG)
+
+
+@given(
+    oscillator_frequencies(), oscillator_amplitudes(), oscillator_amplitudes(), oscillator_times()
+)
+def test_quadrature_orbit_is_the_ellipse_of_its_amplitudes(
+    omega: float, a: float, b: float, t: float
+) -> None:
+    """With x a quarter period behind y, x = a cos wt and y = b sin wt trace x^2/a^2 + y^2/b^2 = 1
+    ((9.13)); in phase they trace the line y = (b/a) x ((9.14))."""
+    assume(abs(a) > 1e-3 and abs(b) > 1e-3)
+    quad = fields.oscillator_orbit(omega, a, b, 0.0, -math.pi / 2, t)
+    assert close((quad.x / a) ** 2 + (quad.y / b) ** 2, 1.0, 1.0, TRIG)
+    line = fields.oscillator_orbit(omega, a, b, 0.0, 0.0, t)
+    assert close(line.y, b / a * line.x, abs(b), TRIG)
+
+
+# --- the parabola: focus, directrix, kites (Figs. 9.1, 9.3, 9.4) ------------------------------
+
+
+@given(fraction_coefficients(), slopes())
+def test_parabola_points_are_as_far_from_focus_as_from_directrix(a: Fraction, x: float) -> None:
+    """Every point of y = a x^2 is equally far from the focus and the directrix (Fig. 9.3b)."""
+    geo = fields.parabola_geometry(float(a))
+    to_focus = geo.focal_radius(x)
+    to_directrix = geo.directrix_distance(x)
+    assert close(to_focus, to_directrix, to_focus + to_directrix, 4 * REL)
+
+
+@given(fraction_coefficients())
+def test_parabola_lengths_are_exact(a: Fraction) -> None:
+    """x^2 = 4 p y = 2 lambda y: lambda = 2p is the half-width at the focus, the tip's radius of
+    curvature and the focus-directrix distance; the slope there is 1 (Figs. 9.3, 9.4)."""
+    geo = fields.parabola_geometry(a)
+    p, lam = geo.focal_height, geo.semi_latus_rectum
+    assert lam == 2 * p == geo.focus_to_directrix == geo.tip_radius_of_curvature
+    assert geo.height(lam) == p  # the latus rectum's ends are level with the focus
+    assert geo.latus_end_slope == 1
+    assert geo.focal_factor == 4
+    assert geo.latus_factor == 2
+    assert geo.directrix_height == -p
+
+
+@given(fraction_coefficients(), slopes())
+def test_force_triangle_altitude_is_constant(a: Fraction, x: float) -> None:
+    """Each force triangle of U = a x^2 has the altitude 1/(2a) = lambda, and its hypotenuse is
+    normal to the tangent (Fig. 9.1a); its base, the scaled force, is -x."""
+    assume(abs(x) > 1e-6)
+    tri = fields.force_triangle(float(a), x)
+    assert close(tri.altitude, 1 / (2 * float(a)), tri.altitude, 4 * REL)
+    assert close(tri.base, -x, abs(x), 4 * REL)
+    slope = 2 * float(a) * x  # the tangent's direction (1, slope) is normal to the hypotenuse
+    assert close(tri.base + tri.altitude * slope, 0.0, abs(tri.base) + abs(tri.altitude * slope))
+
+
+@given(fraction_coefficients(), fraction_coefficients())
+def test_similar_triangles_square_exactly(x: Fraction, unit: Fraction) -> None:
+    """The two-step construction of Fig. 9.1a gives y = x^2 / unit exactly."""
+    assert fields.parabola_point(x, unit) == x * x / unit
+
+
+@given(slopes())
+def test_normal_lines_are_perpendicular(slope: float) -> None:
+    """The lines y = s x and y = -x/s meet at 90 degrees (Fig. 9.2)."""
+    assume(abs(slope) > 1e-6)
+    normal = fields.normal_slope(slope)
+    assert close(fields.angle_between_lines(slope, normal), math.pi / 2, 1.0, 4 * REL)
+
+
+@given(slopes())
+def test_tangent_bisects_focal_radius_and_drop_line(slope: float) -> None:
+    """At the point of slope s, the angle between focal radius and drop line is twice the angle
+    between tangent and drop line (the reflection law of Figs. 9.3b, 9.4, 9.7)."""
+    x = slope / 2  # on y = x^2 the slope 2x is s
+    geo = fields.parabola_geometry(1)
+    to_focus = math.atan2(geo.focal_height - geo.height(x), -x)  # direction to the focus
+    drop = -math.pi / 2
+    angle = abs(math.remainder(to_focus - drop, 2 * math.pi))
+    assert close(angle, fields.focal_drop_angle(abs(slope)), math.pi, 1e-9)
+
+
+# --- calculus, clocks and counts ------------------------------------------------------------
+
+
+@given(fraction_coefficients())
+def test_antiderivative_undoes_the_derivative(n: Fraction) -> None:
+    """d/dr r^n = n r^(n-1) and the antiderivative of r^(n-1) is r^n / n ((9.2b)-(9.2c))."""
+    assume(n != 0)
+    down = fields.power_law_calculus(n)
+    up = fields.power_law_calculus(down.derivative_exponent)
+    assert up.antiderivative_exponent == n
+    assert up.antiderivative_coefficient * down.derivative_coefficient == 1
+
+
+@given(clock_hours(), clock_hours(), clock_sizes())
+def test_clock_hours_wrap_onto_the_dial(hour: int, lead: int, clock: int) -> None:
+    """The hour lead hours later is the same hour modulo the clock, written from -clock/2
+    (exclusive) to clock/2 like the dials of Fig. 9.10."""
+    later = fields.clock_hour(hour, lead, clock)
+    assert (later - hour - lead) % clock == 0
+    assert -Fraction(clock, 2) < later <= Fraction(clock, 2)
+
+
+@given(planet_radii(), radial_fractions())
+def test_chord_is_never_longer_than_the_diameter(radius: float, u: float) -> None:
+    """A straight tunnel between surface points an angle apart is 2 R sin(angle/2): at most the
+    diameter, which the half-turn reaches (exercise 1.9.4: R sqrt(2) for 90 degrees)."""
+    angle = u * math.pi / 10
+    assert fields.chord_length(radius, angle) <= 2 * radius * (1 + REL)
+    assert close(fields.chord_length(radius, math.pi), 2 * radius, radius)
+    assert close(fields.chord_length(radius, math.pi / 2), radius * math.sqrt(2), radius, 4 * REL)
