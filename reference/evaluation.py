@@ -259,8 +259,13 @@ class _Evaluator:
             judgement, model_value, auto = self.judge_constant(claim, printed, key)
         elif claim.restates:
             source = self.evaluate(claim.restates)
-            model_value = self.model_values[claim.restates][0]
-            interval = self.model_values[claim.restates][1]
+            model_value, interval, interval_note = self.model_values[claim.restates]
+            # a restatement may print the quantity in another physical unit (7 mile/s for
+            # 11.3 km/s): convert the restated model value
+            scale = unit_factor(self.claims[claim.restates].unit) / unit_factor(claim.unit)
+            if scale != 1:
+                model_value = model_value * scale
+                interval = None if interval is None else [v * Fraction(scale) for v in interval]
             interval_note = source.interval_note
             judgement = self.judge(claim, printed, model_value, interval)
         elif claim.model is None:

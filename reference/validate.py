@@ -356,6 +356,18 @@ class _Checker:
                     self.add(f, c.id, field, f"refers to an unknown claim {ref!r}")
                 elif ref == c.id:
                     self.add(f, c.id, "args", "a claim cannot refer to itself")
+            restated = by_id.get(c.restates or "")
+            if restated is not None and restated.unit != c.unit:
+                dimensionless = sorted({c.unit, restated.unit} & set(NO_CONVERSION))
+                if dimensionless:
+                    self.add(
+                        f,
+                        c.id,
+                        "unit",
+                        f"is {c.unit!r} but the restated {restated.id} is in "
+                        f"{restated.unit!r}: {'/'.join(dimensionless)} values cannot be "
+                        "converted to or from a physical unit",
+                    )
             for dep in c.depends_on:
                 if dep not in by_id and dep not in self.catalog.rejected:
                     self.add(f, c.id, "depends_on", f"unknown claim {dep!r}")
