@@ -24,12 +24,14 @@ from mechmodel.bangs import (
     BALLS,
     CEILING,
     FLOOR,
+    bang_count,
     bang_history,
     bang_possible,
     ceiling_bounce,
     ceiling_sequence,
     floor_bounce,
     game_over_bang,
+    state_after_bangs,
     velocities_after_bang,
     x2_full_transfer_ratio,
     x2_launch,
@@ -188,3 +190,39 @@ def test_the_book_numbering_of_bangs(m1: Fraction, m2: Fraction, v0: Fraction, n
     assert velocities_after_bang(m1, m2, v0, -v0, n) == sequence.velocities[n - 1]
     if n >= 2:
         assert sequence.bangs[n - 2].kind == (BALLS if n % 2 == 0 else CEILING)
+
+
+@given(
+    st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k),
+    st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k),
+    st.floats(min_value=-10, max_value=10),
+    st.floats(min_value=-10, max_value=10),
+)
+@example(49.0, 1.0, 1.0, -1.0)  # Fig. 5.1: 21 bangs after the floor bounce
+@example(1.0, 1.0, 1.0, 0.0)  # equal masses: a tie on a count boundary
+@example(3.0, 1.0, 1.0, -1.0)  # ratio 3: another tie
+def test_the_o1_counter_agrees_with_the_simulation(
+    m1: float, m2: float, v1: float, v2: float
+) -> None:
+    """The rotation picture (5.12)-(5.13) counts the bangs of a pair under a ceiling without
+    simulating them, and says which state follows bang n: both as bang-by-bang simulation."""
+    sequence = ceiling_sequence(m1, m2, v1, v2)
+    count = bang_count(m1, m2, v1, v2)
+    kinds = [b.kind for b in sequence.bangs]
+    assert count.total == sequence.count
+    assert count.ball_bangs == kinds.count(BALLS)
+    assert count.first == (kinds[0] if kinds else None)
+    scale = math.hypot(v1, v2) * (1 + math.sqrt(max(m1, m2) / min(m1, m2)))
+    for n in {0, sequence.count // 2, sequence.count}:
+        got, want = state_after_bangs(m1, m2, v1, v2, n), sequence.velocities[n]
+        assert abs(got[0] - want[0]) <= 1e-9 * scale
+        assert abs(got[1] - want[1]) <= 1e-9 * scale
+
+
+@given(st.integers(min_value=0, max_value=3))
+def test_a_mass_ratio_of_100_to_the_k_counts_the_digits_of_pi(k: int) -> None:
+    """A heavy ball of mass ratio 100^k driving a light one at rest against a wall (the
+    ceiling) makes as many bangs as the first k+1 digits of pi: the bang angle of (5.11) is
+    about 2 / 10^k and the double bangs turn through pi in all."""
+    digits = int(str(math.pi).replace(".", "")[: k + 1])
+    assert bang_count(100**k, 1, 1, 0).total == digits == ceiling_sequence(100**k, 1, 1, 0).count
