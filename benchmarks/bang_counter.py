@@ -43,9 +43,8 @@ def main() -> None:
         loop = median_time(lambda k=k: ceiling_sequence(100**k, 1, 1, 0).count, args.runs)
         fast = median_time(lambda k=k: bang_count(100**k, 1, 1, 0).total, args.runs)
         same = ceiling_sequence(100**k, 1, 1, 0).count == bang_count(100**k, 1, 1, 0).total
-        print(
-            f"{k}  {loop:>14.4f}  {fast:>11.2e}  {loop / fast:>8.0f}  {'agree' if same else 'DIFFER'}"
-        )
+        verdict = "agree" if same else "DIFFER"
+        print(f"{k}  {loop:>14.4f}  {fast:>11.2e}  {loop / fast:>8.0f}  {verdict}")
 
 
 if __name__ == "__main__":
