@@ -1,7 +1,17 @@
-"""Towers of balls dropped onto the floor (chapter 8).
+"""N-body collisions: towers of balls, pile-ups and the pellet rocket (chapter 8).
 
-The balls fall together at speed ``v_drop``, the heaviest at the bottom, and every collision is
-independent and elastic (Fig. 8.1(b): finite gaps between the balls).
+- Towers dropped onto the floor at speed ``v_drop``, the heaviest ball at the bottom. With
+  finite gaps every collision is independent and elastic (Fig. 8.1(b), Fig. 8.2): the result
+  does not depend on the force law. With zero gaps the balls and the floor push on each other
+  all at once (Fig. 8.1(a), (c), Fig. 7.6-7.7): ``zero_gap_tower`` integrates that soft
+  collision (``mechmodel.contact.soft_collision``).
+- The INF limit of a tower whose every ball is infinitely heavier than the one above it, the
+  column bounce of identical balls (Newton's balls, Fig. 8.2(c-d)), the kinetic-energy boost.
+- Inelastic collisions: the quadratic (8.4b) for the final velocity at a given energy loss, the
+  Ka-runch pile-ups of Figs. 8.5-8.6, and the "time-reversed pile-up": the rocket of pellets
+  (8.7), Fig. 8.8.
+
+Exact with Fraction inputs wherever only + - * / are involved; the soft collision is numerical.
 """
 
 from __future__ import annotations
@@ -14,6 +24,7 @@ from typing import Any
 
 from mechmodel import inputs
 from mechmodel.collisions import Collision, collide
+from mechmodel.contact import SoftCollision, soft_collision
 
 
 @dataclass(frozen=True)
@@ -29,6 +40,18 @@ class Tower:
     rebound: Any
     bangs: tuple[Collision, ...]
     velocities: tuple[Any, ...]
+
+    @property
+    def momentum_slopes(self) -> tuple[Any, ...]:
+        """Sizes m_k / m_(k+1) of the slopes of the momentum lines of the bangs (Fig. 8.1(b):
+        "a slope 100/30 line"): the line falls with slope -m_k / m_(k+1) in (V_k, V_(k+1))."""
+        return tuple(lo / up for lo, up in itertools.pairwise(self.masses))
+
+    @property
+    def energy_boost(self) -> Any:
+        """The top ball's kinetic-energy gain factor, (V_top / v_drop)^2 (after Fig. 8.2)."""
+        ratio = self.velocities[-1] / self.rebound
+        return ratio * ratio
 
 
 def independent_tower(masses: Sequence[Any], v_drop: Any = 1) -> Tower:
@@ -52,3 +75,290 @@ def independent_tower(masses: Sequence[Any], v_drop: Any = 1) -> Tower:
         rising = bangs[-1].v2
     finals = (*(bang.v1 for bang in bangs), rising)
     return Tower(tuple(masses), rebound, tuple(bangs), finals)
+
+
+def geometric_tower(n_balls: Any, ratio: Any, v_drop: Any = 1) -> Tower:
+    """The independent-collision tower of ``n_balls`` balls, each ``ratio`` times the one above
+    it (Fig. 8.2: 4 balls with ratio 3 or 7; ratio 1 is Newton's balls). The top ball has mass 1.
+    """
+    n = inputs.count(n_balls, "n_balls", minimum=1)
+    inputs.positive(ratio, "ratio")
+    masses = [ratio ** (n - 1 - k) for k in range(n)]
+    return independent_tower(masses, v_drop)
+
+
+def inf_limit_tower(n_balls: Any, v_drop: Any = 1) -> tuple[Any, ...]:
+    """Velocities of a tower whose every ball is infinitely heavier than the one above (the INF
+    limit, Fig. 4.5, exercise 1.8.2): each ball leaves its bang at 2 V + v_drop, where V is the
+    velocity of the (immovable) ball below. The top ball reaches (2^N - 1) v_drop."""
+    n = inputs.count(n_balls, "n_balls", minimum=1)
+    inputs.positive(v_drop, "v_drop")
+    rising = collide(math.inf, 1, 0, -v_drop).v2
+    out = [rising]
+    for _ in range(n - 1):
+        rising = collide(math.inf, 1, rising, -v_drop).v2
+        out.append(rising)
+    return tuple(out)
+
+
+def energy_boost(velocity: Any, v_drop: Any = 1) -> Any:
+    """Kinetic-energy gain factor (V / v_drop)^2 of a ball launched at ``velocity`` by a tower
+    dropped at ``v_drop``: the (V4)^2 of Fig. 8.2(b), the 5.8^2 of the 3:1 tower."""
+    inputs.real(velocity, "velocity")
+    inputs.positive(v_drop, "v_drop")
+    return (velocity / v_drop) * (velocity / v_drop)
+
+
+def column_bounce_bangs(n_balls: Any, ratio: Any = 1, v_drop: Any = 1) -> int:
+    """Number of independent bangs a dropped column of balls makes before it flies apart.
+
+    The balls (each ``ratio`` times the one above; 1 for the identical balls of Fig. 8.2(c-d))
+    fall together at ``v_drop`` with small gaps; the lowest pending bang goes first: ball 1 off
+    the floor when it falls, else the lowest pair closing on each other (``collide``). The column
+    is done when ball 1 rises and no pair closes. Identical balls need N (N + 1) / 2 bangs:
+    N floor bounces and the N (N - 1) / 2 swaps of the velocity exchanges.
+    """
+    n = inputs.count(n_balls, "n_balls", minimum=1)
+    inputs.positive(ratio, "ratio")
+    inputs.positive(v_drop, "v_drop")
+    masses = [ratio ** (n - 1 - k) for k in range(n)]
+    v = [-v_drop] * n
+    limit = 100 * n * n
+    for count in range(limit):
+        if v[0] < 0:
+            v[0] = collide(math.inf, masses[0], 0, v[0]).v2
+            continue
+        closing = [k for k in range(n - 1) if v[k] > v[k + 1]]
+        if not closing:
+            return count
+        k = closing[0]
+        v[k], v[k + 1] = collide(masses[k], masses[k + 1], v[k], v[k + 1]).after
+    raise ValueError(f"the column did not fly apart within {limit} bangs")
+
+
+def zero_gap_tower(
+    masses: Sequence[Any], power: Any, v_drop: Any = 1, strength: Any = 1
+) -> SoftCollision:
+    """Final velocities of a tower dropped with zero gaps (Fig. 8.1(a), (c); Fig. 7.6-7.7).
+
+    The balls touch each other and, at the start, the floor; all move down at ``v_drop``. Every
+    contact (floor-ball 1 and each ball-ball pair) pushes with the same law F = k y^n of its
+    overlap y; gravity is left out during the contact (its impulse over the short contact is
+    negligible) and there is no friction, so energy is conserved. For a power law the final
+    velocities are then proportional to ``v_drop`` and independent of k = ``strength``: scaling
+    time and length removes both. Returns the ``contact.SoftCollision`` (velocities with their
+    numerical errors).
+    """
+    inputs.positive(v_drop, "v_drop")
+    n = len(masses)
+    return soft_collision(masses, [0] * n, [-v_drop] * n, power, strength, floor=True)
+
+
+# --- inelastic collisions: (8.1)-(8.6), pile-ups, Figs. 8.3-8.6 ------------------------------
+
+
+@dataclass(frozen=True)
+class InelasticQuadratic:
+    """The quadratic (8.4b) for u1 at momentum p and kinetic energy K, in the book's form
+    A u1^2 + B u1 + C = 0 (twice the energy balance): A = m1 (m1 + m2) / m2,
+    B = -2 p m1 / m2, C = p^2 / m2 - 2 K.
+
+    ``momentum_coefficient`` is the 2 of -2 p (m1/m2) u1 (= -B m2 / (p m1)); ``energy_coefficient``
+    the 2 of -2 K (= -dC/dK); ``roots`` the two solutions (u1FIN and u1IN of Fig. 8.3b, in
+    increasing order, None if the energy is below the minimum); ``v_com`` their mean.
+    """
+
+    a: Any
+    b: Any
+    c: Any
+    momentum_coefficient: Any
+    energy_coefficient: Any
+    roots: tuple[float, float] | None
+    v_com: Any
+
+
+def inelastic_quadratic(m1: Any, m2: Any, momentum: Any, energy: Any) -> InelasticQuadratic:
+    """Build (8.4b) by putting u2 = (p - m1 u1) / m2 (8.4a) into the energy (8.2), and solve it.
+
+    The coefficients are read off the polynomial at u1 = 0, 1, -1, so nothing is assumed of
+    their form. Exact with Fraction inputs (the roots are floats).
+    """
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    inputs.real(momentum, "momentum")
+    inputs.real(energy, "energy")
+
+    def twice_balance(u1: Any, k: Any) -> Any:
+        u2 = (momentum - m1 * u1) / m2
+        return m1 * u1 * u1 + m2 * u2 * u2 - 2 * k
+
+    c = twice_balance(0, energy)
+    a = (twice_balance(1, energy) + twice_balance(-1, energy)) / 2 - c
+    b = (twice_balance(1, energy) - twice_balance(-1, energy)) / 2
+    discriminant = b * b - 4 * a * c
+    roots = None
+    if discriminant >= 0:
+        root = math.sqrt(discriminant)
+        roots = ((-b - root) / (2 * a), (-b + root) / (2 * a))
+    return InelasticQuadratic(
+        a=a,
+        b=b,
+        c=c,
+        momentum_coefficient=-b * m2 / (momentum * m1) if momentum else None,
+        energy_coefficient=twice_balance(0, energy) - twice_balance(0, energy + 1),
+        roots=roots,
+        v_com=momentum / (m1 + m2),
+    )
+
+
+def equal_velocity_line_angle(v_com: Any) -> float:
+    """Angle of the line through (V_COM, V_COM) and the origin (V1 = V2), radians: the 45-degree
+    line on which the totally inelastic point of Fig. 8.3c-8.4 lies."""
+    inputs.real(v_com, "v_com")
+    if v_com == 0:
+        raise ValueError("the origin is on every line: give a non-zero V_COM")
+    return math.atan2(v_com, v_com) if v_com > 0 else math.atan2(-v_com, -v_com)
+
+
+@dataclass(frozen=True)
+class PileUp:
+    """A chain of Ka-runch (totally inelastic) collisions (Figs. 8.5-8.6).
+
+    ``slopes[k]`` is the pile's mass over the added car's before the k-th collision (the
+    velocity-velocity slope k:1 of the momentum line) and ``inverse_slopes`` their reciprocals
+    (1/1, 1/2, ...); energies are kinetic energies, ``energy_lost`` the total loss.
+    """
+
+    momentum_in: Any
+    energy_in: Any
+    final_mass: Any
+    final_velocity: Any
+    momentum_out: Any
+    energy_out: Any
+    energy_lost: Any
+    slopes: tuple[Any, ...]
+    inverse_slopes: tuple[Any, ...]
+
+
+def pile_up(car_mass: Any, car_speed: Any, moving_cars: Any, stationary_cars: Any) -> PileUp:
+    """Pile up ``moving_cars`` cars at ``car_speed`` and ``stationary_cars`` cars at rest, all of
+    ``car_mass``, by Ka-runch collisions (``collide`` with restitution 0).
+
+    One moving car plows through a line of stationary ones (Fig. 8.5), or a line of moving cars
+    rams one stationary car, one after the other (Fig. 8.6). Other mixtures have many possible
+    orders (Fig. 8.7) and are refused.
+    """
+    inputs.mass(car_mass, "car_mass")
+    inputs.real(car_speed, "car_speed")
+    moving = inputs.count(moving_cars, "moving_cars", minimum=1)
+    still = inputs.count(stationary_cars, "stationary_cars", minimum=1)
+    if moving > 1 and still > 1:
+        raise ValueError("a mixed pile-up has many possible orders (Fig. 8.7): give one side 1")
+    momentum_in = moving * car_mass * car_speed
+    energy_in = moving * car_mass * car_speed * car_speed / 2
+    if moving == 1:
+        pile_mass, pile_v, added, added_v = car_mass, car_speed, still, 0 * car_speed
+    else:
+        pile_mass, pile_v, added, added_v = car_mass, 0 * car_speed, moving, car_speed
+    slopes = []
+    for _ in range(added):
+        slopes.append(pile_mass / car_mass)
+        hit = collide(pile_mass, car_mass, pile_v, added_v, 0)
+        pile_mass, pile_v = pile_mass + car_mass, hit.v1
+    energy_out = pile_mass * pile_v * pile_v / 2
+    return PileUp(
+        momentum_in=momentum_in,
+        energy_in=energy_in,
+        final_mass=pile_mass,
+        final_velocity=pile_v,
+        momentum_out=pile_mass * pile_v,
+        energy_out=energy_out,
+        energy_lost=energy_in - energy_out,
+        slopes=tuple(slopes),
+        inverse_slopes=tuple(1 / s for s in slopes),
+    )
+
+
+# --- the pellet rocket: (8.7), Fig. 8.8 -------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class PelletRocket:
+    """A line of equal balls blown apart one at a time from the rear (8.7), Fig. 8.8.
+
+    Balls are numbered 0 (rear) to N-1 (the payload, ``payload_label``); blast b (0 ... N-2,
+    ``last_blast``; ``blasts`` in all) blows ball b back at the exhaust velocity relative to the
+    rocket before the blast. ``rocket_masses[b]`` is the mass left after blast b (the 10m, 9m, ...
+    of (8.7)); ``boosts[b]`` the rocket's velocity gain dV_M(b) = -m v_e / M_b; ``velocities[b]``
+    its velocity V(b) after blast b (partial sums of the harmonic series); ``slopes[b]`` the
+    pow(b)-line slope -m / M_b; ``pellet_momentum`` m v_e; ``pellet_velocities[b]`` ball b's
+    final velocity in the starting frame; ``total_momenta[b]`` the momentum of all the balls
+    after blast b (zero: "zero-sum"); ``first_fast_blast`` the first blast after which the rocket
+    outruns the exhaust speed; ``first_forward_pellet`` the first ball to end up moving forward.
+    """
+
+    payload_label: int
+    last_blast: int
+    blasts: int
+    rocket_masses: tuple[Any, ...]
+    boosts: tuple[Any, ...]
+    velocities: tuple[Any, ...]
+    slopes: tuple[Any, ...]
+    pellet_momentum: Any
+    pellet_velocities: tuple[Any, ...]
+    total_momenta: tuple[Any, ...]
+    first_fast_blast: int | None
+    first_forward_pellet: int | None
+
+
+def pellet_rocket(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any) -> PelletRocket:
+    """Blow the pellets off a line of ``n_balls`` equal balls at rest, one per blast (8.7).
+
+    Each blast conserves momentum: m dv_b + M_b dV_M(b) = 0 with dv_b = ``exhaust_velocity``
+    (negative: backward) relative to the rocket's velocity before the blast. Exact with Fraction
+    inputs.
+    """
+    n = inputs.count(n_balls, "n_balls", minimum=2)
+    inputs.mass(pellet_mass, "pellet_mass")
+    inputs.real(exhaust_velocity, "exhaust_velocity")
+    if exhaust_velocity > 0:
+        raise ValueError("the exhaust goes backward: exhaust_velocity <= 0")
+    v = 0 * exhaust_velocity
+    masses, boosts, velocities, slopes, pellets, totals = [], [], [], [], [], []
+    for b in range(n - 1):
+        rest = (n - 1 - b) * pellet_mass
+        boost = -pellet_mass * exhaust_velocity / rest
+        pellets.append(v + exhaust_velocity)
+        v = v + boost
+        masses.append(rest)
+        boosts.append(boost)
+        velocities.append(v)
+        slopes.append(-pellet_mass / rest)
+        totals.append(sum(pellet_mass * p for p in pellets) + rest * v)
+    fast = [b for b, vb in enumerate(velocities) if vb > -exhaust_velocity]
+    forward = [b for b, pb in enumerate(pellets) if pb > 0]
+    return PelletRocket(
+        payload_label=n - 1,
+        last_blast=n - 2,
+        blasts=n - 1,
+        rocket_masses=tuple(masses),
+        boosts=tuple(boosts),
+        velocities=tuple(velocities),
+        slopes=tuple(slopes),
+        pellet_momentum=pellet_mass * exhaust_velocity,
+        pellet_velocities=tuple(pellets),
+        total_momenta=tuple(totals),
+        first_fast_blast=fast[0] if fast else None,
+        first_forward_pellet=forward[0] if forward else None,
+    )
+
+
+def rocket_remaining(n_balls: Any, remaining: Any) -> tuple[int, ...]:
+    """Labels of the balls still in the rocket when ``remaining`` of the ``n_balls`` are left
+    (Fig. 8.8): the pellets go from the rear, ball 0 first, so the last ``remaining`` labels
+    stay, the payload N - 1 at the head."""
+    n = inputs.count(n_balls, "n_balls", minimum=1)
+    k = inputs.count(remaining, "remaining", minimum=1)
+    if k > n:
+        raise ValueError("more balls remaining than the rocket had")
+    return tuple(range(n - k, n))

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING
 
-from mechmodel.towers import independent_tower
+from mechmodel.towers import geometric_tower, independent_tower, pellet_rocket, zero_gap_tower
 from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
     from reference.evaluation import EvaluatedClaim
@@ -39,3 +41,101 @@ def _tower(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         ax.axhline(0, color="0.8")
         ax.axvline(0, color="0.8")
     fig.suptitle(f"top ball leaves at V3 = {tower.velocities[-1]:.4g}", fontsize="small")
+
+
+# Fig. 8.1(c)'s linear law: F = k y, the power 1 (the label "F(y) = k y" prints no number).
+LINEAR = 1
+
+
+def _tower_paths(ax: Axes, masses: list[float], power: float, v_drop: float, title: str) -> None:
+    """Heights (offsets) of a zero-gap tower's balls against time, and their final velocities."""
+    run = zero_gap_tower(masses, power, v_drop)
+    finals = [e.value for e in run.velocities]
+    # stack the balls (sizes taken out by the model) with a size D larger than any squeeze
+    squeezes = [max(-x for x in run.positions[0])]
+    squeezes += [
+        max(lo - up for lo, up in zip(a, b, strict=True))
+        for a, b in itertools.pairwise(run.positions)
+    ]
+    size = 1.5 * max(squeezes)
+    t_end = run.duration * 1.5
+    for k, row in enumerate(run.positions):
+        times = [*run.times, t_end]
+        heights = [*row, row[-1] + finals[k] * (t_end - run.times[-1])]
+        ax.plot(
+            times,
+            [h + k * size for h in heights],
+            label=f"m{k + 1} = {masses[k]:g}: V = {finals[k]:.3g}",
+        )
+    ax.axhline(0, color="k", linewidth=0.8)
+    ax.set_title(title, fontsize="small")
+    ax.set_xlabel("time (contact units)")
+    ax.legend(fontsize="x-small")
+
+
+@figure(
+    "tower-zero-gap",
+    "Fig. 8.1(a), (c)",
+    "The 100/30/10 tower dropped at speed 1 with zero gaps, integrated with one contact law for "
+    "the floor and both ball pairs and no gravity during the contact: (a) quartic F = k y^4, the "
+    "top ball leaves at 3.41; (c) linear F = k y, super-elastic bounce squelched.",
+    ("ch08.tower-100-30-10.v3-quartic", "ch08.tower-100-30-10.v3"),
+)
+def _tower_zero_gap(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    masses = [value_of(claims, f"ch08.tower-100-30-10.m{k}") for k in (1, 2, 3)]
+    v_drop = value_of(claims, "ch08.tower-100-30-10.v-drop")
+    quartic = fig.add_subplot(1, 2, 1)
+    _tower_paths(quartic, masses, 4, v_drop, "(a) quartic force")
+    quartic.set_ylabel("bottom of each ball (floor at 0)")
+    _tower_paths(fig.add_subplot(1, 2, 2), masses, LINEAR, v_drop, "(c) linear force")
+
+
+@figure(
+    "four-ball-towers",
+    "Fig. 8.2(a), (b)",
+    "Velocities of the balls of the 4-ball towers with independent bangs, each ball 3 (a) or 7 "
+    "(b) times the one above: after each bang, the rising ball's velocity grows by the factor "
+    "2 m_k / (m_k + m_(k+1)) on V + 1; the top ball reaches 5.75 and 9.72.",
+    ("ch08.tower-3.top", "ch08.tower-7.top"),
+)
+def _four_ball_towers(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    n = round(value_of(claims, "ch08.tower-3.n-balls"))
+    v_drop = value_of(claims, "ch08.tower-100-30-10.v-drop")
+    ax = fig.add_subplot()
+    for key, marker in (("ch08.tower-3.ratio", "o"), ("ch08.tower-7.ratio", "s")):
+        ratio = value_of(claims, key)
+        tower = geometric_tower(n, ratio, v_drop)
+        rising = [tower.rebound, *(bang.v2 for bang in tower.bangs)]
+        ax.plot(
+            range(1, n + 1), rising, f"-{marker}", label=f"ratio {ratio:g}: V{n} = {rising[-1]:.3g}"
+        )
+        ax.plot(range(1, n + 1), tower.velocities, f":{marker}", color="0.6")
+    ax.plot(range(1, n + 1), [2**k - 1 for k in range(1, n + 1)], "k--", label="INF limit 2^k - 1")
+    ax.set_xlabel("ball k (bottom = 1)")
+    ax.set_ylabel("velocity after its bang (dotted: final)")
+    ax.legend(fontsize="small")
+
+
+@figure(
+    "pellet-rocket",
+    "Fig. 8.8",
+    "The rocket of 11 unit balls blown apart one pellet at a time at exhaust velocity -1: the "
+    "rocket's velocity V(b) after blast b (harmonic partial sums) and each pellet's final "
+    "velocity V(b-1) - 1; pellets 7, 8, 9 end up moving forward.",
+    ("ch08.rocket.velocity-9", "ch08.rocket.first-forward-pellet", "ch08.rocket.first-fast-blast"),
+)
+def _pellet_rocket(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    rocket = pellet_rocket(
+        round(value_of(claims, "ch08.rocket.n-balls")),
+        value_of(claims, "ch08.rocket.pellet-mass"),
+        value_of(claims, "ch08.rocket.exhaust"),
+    )
+    blasts = list(range(rocket.blasts))
+    ax = fig.add_subplot()
+    ax.step(blasts, rocket.velocities, where="post", label="rocket V(b)")
+    ax.plot(blasts, rocket.pellet_velocities, "o", label="pellet b")
+    ax.axhline(0, color="k", linewidth=0.8)
+    ax.axhline(-value_of(claims, "ch08.rocket.exhaust"), color="0.6", linestyle=":", label="|ve|")
+    ax.set_xlabel("blast b")
+    ax.set_ylabel("velocity (units of |ve|)")
+    ax.legend(fontsize="small")

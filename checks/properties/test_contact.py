@@ -1,0 +1,155 @@
+"""Laws of contact geometry, targets and the soft-contact integrator (mechmodel.contact):
+chapter 7.
+
+Geometry is compared within 1e-12 of the magnitudes involved, exactly with Fractions. The
+integrator is held to its own declared error and to energy conserved within 1e-9 relative.
+Integrator properties run fewer examples (``max_examples=10``): each example integrates a
+collision twice (for its error) at about 0.05-0.2 s, and the whole suite must stay under 30 s.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+from hypothesis import example, given, settings, target
+from hypothesis import strategies as st
+
+from checks.properties.strategies import (
+    closing_speeds,
+    contact_powers,
+    fraction_quantities,
+    gaps,
+    positive_quantities,
+    soft_masses,
+)
+from mechmodel import contact
+from mechmodel.collisions import collide
+
+pytestmark = pytest.mark.properties
+REL = 1e-12
+ENERGY = 1e-9  # the integrator's energy drift over a whole collision, relative
+SLOW = settings(max_examples=10)  # each example integrates a collision twice (0.05-0.2 s)
+
+
+# --- the dent (7.1)-(7.4) -----------------------------------------------------------------------
+
+
+@given(gaps(), st.floats(min_value=0, max_value=1))
+def test_flat_radius_is_the_geometric_mean(radius: float, fraction: float) -> None:
+    """r^2 = x (2R - x): the flat's radius is the geometric mean of the depth and the rest of
+    the diameter (7.1a); the exact sagitta takes r back to x (7.1b)."""
+    depth = fraction * radius
+    r = contact.flat_spot_radius(radius, depth)
+    assert math.isclose(r * r, depth * (2 * radius - depth), rel_tol=4 * REL, abs_tol=REL)
+    assert math.isclose(contact.sagitta(radius, r), depth, rel_tol=1e-9, abs_tol=1e-9 * radius)
+
+
+@given(fraction_quantities(), st.fractions(min_value=0, max_value=1, max_denominator=12))
+def test_dent_volume_is_the_integral_of_the_flat(radius: Fraction, fraction: Fraction) -> None:
+    """V(X) = R pi X^2 - pi X^3 / 3 (7.4); at X = 2R the whole ball, 4/3 pi R^3, exactly."""
+    depth = 2 * radius * fraction
+    dent = contact.dent_volume(radius, depth)
+    assert math.isclose(
+        dent.volume,
+        math.pi * float(radius * depth**2 - depth**3 / 3),
+        rel_tol=4 * REL,
+        abs_tol=REL,
+    )
+    assert dent.whole_ball == Fraction(4, 3)
+
+
+@given(positive_quantities(), gaps(), st.floats(min_value=0, max_value=1))
+def test_balloon_stiffness_is_the_slope_of_its_force(p: float, radius: float, u: float) -> None:
+    """dF/dx of the balloon P pi x (2R - x) is 2 pi P (R - x): 2 pi P R at first contact (7.2)."""
+    depth = u * radius
+    k = contact.balloon_stiffness(p, radius, depth)
+    assert math.isclose(k, 2 * math.pi * p * (radius - depth), rel_tol=8 * REL, abs_tol=REL * p)
+
+
+# --- targets (Figs. 7.3-7.4, (7.8)) -----------------------------------------------------------
+
+
+@given(fraction_quantities(), fraction_quantities())
+def test_constant_target_removes_the_fall_energy(height: Fraction, distance: Fraction) -> None:
+    """A constant target's force times its stopping distance is the fall's energy (7.5a)."""
+    target_ = contact.constant_force_target(height, distance)
+    assert target_.force * distance == height
+    assert target_.potential_slope == -target_.force
+
+
+@given(fraction_quantities(), fraction_quantities())
+def test_ramp_work_is_half_force_times_distance(force: Fraction, distance: Fraction) -> None:
+    """A linear force ramp does the triangle's work F d / 2, exactly."""
+    assert contact.ramp_work(force, distance) == force * distance / 2
+
+
+@given(fraction_quantities(), fraction_quantities())
+def test_vertex_is_where_the_force_vanishes(a: Fraction, b: Fraction) -> None:
+    """The vertex of a y^2 + b y is at -b/2a, depth -b^2/4a (7.8), where the force -2a y - b
+    vanishes; exactly."""
+    v = contact.parabola_vertex(a, b)
+    f = contact.quadratic_potential_force(a, b)
+    assert f.slope * v.y_shift + f.constant == 0
+    assert (v.y_shift, v.u_shift) == (-b / (2 * a), -b * b / (4 * a))
+
+
+@given(positive_quantities(), positive_quantities(), positive_quantities())
+def test_linear_target_takes_up_the_energy(a: float, h: float, scale: float) -> None:
+    """The target a y^2 stops the fall where a y^2 = h, and its ramp does that work."""
+    stop = contact.linear_target(a, h, h * scale)
+    assert math.isclose(a * stop.stop**2, h, rel_tol=4 * REL)
+    assert math.isclose(stop.energy, h, rel_tol=8 * REL)
+
+
+# --- the soft-contact integrator --------------------------------------------------------------
+
+
+@SLOW
+@given(soft_masses(), soft_masses(), closing_speeds(), contact_powers())
+@example(7.0, 1.0, 2.0, 4.0)  # the 7:1 pair of Fig. 7.6, quartic
+@example(7.0, 1.0, 2.0, 1.0)  # and linear (Fig. 7.7)
+def test_soft_collision_conserves_energy_and_momentum(
+    m1: float, m2: float, speed: float, power: float
+) -> None:
+    """Two balls pushing with F = k y^n while they overlap leave with the kinetic energy and
+    the momentum they came with, for any power law and mass ratio."""
+    run = contact.soft_collision([m1, m2], [0.0, 0.0], [speed, 0.0], power)
+    v1, v2 = (e.value for e in run.velocities)
+    p_in, p_out = m1 * speed, m1 * v1 + m2 * v2
+    target(run.energy_error, label="relative energy error")
+    assert run.energy_error <= ENERGY
+    assert abs(p_out - p_in) <= 1e-12 * (abs(m1 * v1) + abs(m2 * v2) + p_in)
+
+
+@SLOW
+@given(soft_masses(), soft_masses(), closing_speeds(), contact_powers(), gaps())
+def test_separated_balls_follow_the_elastic_collision_map(
+    m1: float, m2: float, speed: float, power: float, gap: float
+) -> None:
+    """Balls that start apart and collide once leave with the velocities of the elastic bang
+    (4.1), mechmodel.collisions.collide, within the integrator's declared error."""
+    run = contact.soft_collision([m1, m2], [0.0, gap], [speed, 0.0], power, strength=1.0)
+    expected = collide(m1, m2, speed, 0.0).after
+    errors = [abs(got.value - want) for got, want in zip(run.velocities, expected, strict=True)]
+    target(max(errors) / speed, label="relative velocity error")
+    for got, error in zip(run.velocities, errors, strict=True):
+        assert error <= got.error
+        assert got.error <= 1e-7 * speed
+
+
+@SLOW
+@given(st.lists(soft_masses(), min_size=2, max_size=4), contact_powers())
+def test_zero_gap_tower_ignores_force_constant_and_drop_speed(
+    masses: list[float], power: float
+) -> None:
+    """A zero-gap tower with one power law for every contact gives final velocities
+    proportional to the drop speed and independent of the force constant (scaling)."""
+    from mechmodel.towers import zero_gap_tower
+
+    base = zero_gap_tower(masses, power, 1.0, 1.0)
+    other = zero_gap_tower(masses, power, 3.0, 0.2)
+    assert base.energy_error <= ENERGY
+    for a, b in zip(base.velocities, other.velocities, strict=True):
+        assert abs(b.value / 3.0 - a.value) <= a.error + b.error / 3.0
