@@ -5,7 +5,9 @@ docstring's first paragraph), the book's equations and figures the docstring cit
 examples ran, the worst value of any ``hypothesis.target`` score (the suite targets its
 conservation errors there) and the outcome. At the end of the session the controller (not an
 xdist worker) writes ``reports/out/properties.json``, which ``bangcheck report`` shows with its
-date. Examples and scores come from Hypothesis's observability callbacks (hypothesis >= 6.137).
+date. Examples and scores come from the run statistics Hypothesis hands to
+``hypothesis.statistics.collector`` once per test (the same ones its pytest plugin prints with
+``--hypothesis-show-statistics``); they cost nothing per example.
 """
 
 from __future__ import annotations
@@ -20,15 +22,7 @@ from typing import Any
 
 import pytest
 from hypothesis import settings
-
-from hypothesis.internal import observability
-from hypothesis.internal.observability import (
-    add_observability_callback,
-    remove_observability_callback,
-)
-
-# Observations need no line coverage here, and collecting it slows every example severalfold.
-observability.OBSERVABILITY_COLLECT_COVERAGE = False
+from hypothesis.statistics import collector
 
 OUTPUT = Path("reports") / "out" / "properties.json"
 _REFERENCE = re.compile(r"\((?:\d+|1\.A)\.\d+[a-z]?\)|Figs?\. \d+\.\d+(?:\([a-z]\)|[a-z])?")
@@ -40,21 +34,24 @@ def _law(doc: str | None) -> str:
     return " ".join(first.split())
 
 
-class _Observer:
-    """Counts the passing examples of one test and keeps its worst target score."""
+class _Statistics:
+    """Receives a test's run statistics and passes them on to whoever else listens."""
 
-    def __init__(self) -> None:
+    def __init__(self, previous: Any) -> None:
+        self.previous = previous
         self.examples = 0
         self.worst: float | None = None
 
-    def __call__(self, observation: Any) -> None:
-        if getattr(observation, "type", None) != "test_case":
-            return
-        if observation.status == "passed":
-            self.examples += 1
-        for name, value in (observation.features or {}).items():
-            if name.startswith("target:") and isinstance(value, int | float):
-                self.worst = value if self.worst is None else max(self.worst, value)
+    def __call__(self, stats: dict[str, Any]) -> None:
+        for phase, data in stats.items():
+            if phase.endswith("-phase") and isinstance(data, dict):
+                cases = data.get("test-cases", [])
+                self.examples += sum(case.get("status") == "valid" for case in cases)
+        scores = [v for v in stats.get("targets", {}).values() if isinstance(v, int | float)]
+        if scores:
+            self.worst = max(scores)
+        if self.previous is not None:
+            self.previous(stats)
 
 
 class InvariantRecorder:
@@ -64,16 +61,15 @@ class InvariantRecorder:
         self.config = config
         self.records: list[dict[str, Any]] = []
 
-    @pytest.hookimpl(wrapper=True)
+    @pytest.hookimpl(wrapper=True, trylast=True)  # inside Hypothesis's own wrapper
     def pytest_runtest_call(self, item: pytest.Item) -> Generator[None]:
         if item.get_closest_marker("properties") is None:
             return (yield)
-        observer = _Observer()
-        add_observability_callback(observer)
+        observer = _Statistics(collector.value)
         try:
-            return (yield)
+            with collector.with_value(observer):
+                return (yield)
         finally:
-            remove_observability_callback(observer)
             function = getattr(item, "function", None)
             doc = inspect.getdoc(function) if function else None
             item.user_properties.append(
