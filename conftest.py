@@ -33,9 +33,9 @@ from reference.validate import checked_catalog
 IN_CI = os.environ.get("CI", "").lower() == "true"
 MIN_EXAMPLES = 50  # the ci profile's floor: speed never hollows a property out
 
-settings.register_profile("ci", derandomize=True, deadline=None, max_examples=MIN_EXAMPLES * 2)
+settings.register_profile("ci", derandomize=True, deadline=None, max_examples=MIN_EXAMPLES)
 settings.register_profile("dev", deadline=None, max_examples=MIN_EXAMPLES)
-settings.register_profile("thorough", deadline=None, max_examples=MIN_EXAMPLES * 20)
+settings.register_profile("thorough", deadline=None, max_examples=MIN_EXAMPLES * 10)
 settings.load_profile("ci" if IN_CI else "dev")
 
 _BOOK = pytest.StashKey[Book | None]()

@@ -75,7 +75,7 @@ def identity() -> Identity:
     return Identity(data["sha256"], data["lines"], data["title"], tuple(chapters))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # compared and hashed by identity: one Book per file read
 class Book:
     """The verified text of the book, one string per line (index 0 is line 1)."""
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import tomllib
 from collections.abc import Iterator
 from dataclasses import dataclass
+from functools import cached_property
 from importlib.resources import files
 from importlib.resources.abc import Traversable
 from pathlib import Path
@@ -49,13 +50,21 @@ class Catalog:
             for claim in chapter_file.claims:
                 yield chapter_file, claim
 
-    def by_id(self) -> dict[str, Claim]:
-        """Claims by id (ids are unique in a valid catalog)."""
+    @cached_property
+    def _claims_by_id(self) -> dict[str, Claim]:
         return {claim.id: claim for _, claim in self.claims()}
 
-    def file_of(self) -> dict[str, ChapterFile]:
-        """The file of each claim id."""
+    @cached_property
+    def _files_by_id(self) -> dict[str, ChapterFile]:
         return {claim.id: f for f, claim in self.claims()}
+
+    def by_id(self) -> dict[str, Claim]:
+        """Claims by id (ids are unique in a valid catalog; a shared dict: do not modify)."""
+        return self._claims_by_id
+
+    def file_of(self) -> dict[str, ChapterFile]:
+        """The file of each claim id (a shared dict: do not modify)."""
+        return self._files_by_id
 
 
 def default_directory() -> Traversable:

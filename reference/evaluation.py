@@ -11,7 +11,7 @@ import math
 import sys
 from collections import Counter
 from collections.abc import Iterator, Sequence
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field, fields
 from decimal import Decimal
 from fractions import Fraction
 from functools import cached_property
@@ -87,9 +87,7 @@ class EvaluatedClaim:
 
     def to_json(self) -> dict[str, Any]:
         """The claim as a JSON object (missing values null, never NaN)."""
-        out = asdict(self)
-        del out["file"]
-        return out
+        return {f.name: getattr(self, f.name) for f in fields(self) if f.name != "file"}
 
 
 @dataclass(frozen=True)
