@@ -1,0 +1,106 @@
+"""Laws of the vector-product models (mechmodel.vectors): Appendix 1.A.
+
+Exact (Fraction and int) inputs must give exact equalities; float forms are compared within
+1e-12 of the sum of the magnitudes involved.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import assume, example, given
+from hypothesis import strategies as st
+
+from checks.properties.strategies import (
+    exact_plane_vectors,
+    exact_square_matrices,
+    exact_vectors3,
+    levi_civita_index_quads,
+)
+from mechmodel import vectors
+
+pytestmark = pytest.mark.properties
+
+
+@given(levi_civita_index_quads())
+@example((1, 2, 1, 2))
+@example((1, 2, 2, 1))
+def test_levi_civita_identity(quad: tuple[int, int, int, int]) -> None:
+    """sum_k eps_ijk eps_mnk = delta_im delta_jn - delta_in delta_jm (1.A.7)."""
+    assert vectors.epsilon_contraction(*quad) == vectors.delta_expansion(*quad)
+
+
+@given(st.permutations([1, 2, 3]), st.integers(0, 2), st.integers(0, 2))
+def test_levi_civita_changes_sign_under_a_swap(perm: list[int], a: int, b: int) -> None:
+    """Swapping two indices of eps_ijk changes its sign; eps_123 = +1, and a repeated index
+    gives 0 (1.A.3a)."""
+    assert vectors.levi_civita(1, 2, 3) == 1
+    swapped = list(perm)
+    swapped[a], swapped[b] = swapped[b], swapped[a]
+    expected = vectors.levi_civita(*perm) * (1 if a == b else -1)
+    assert vectors.levi_civita(*swapped) == expected
+    assert vectors.levi_civita(perm[0], perm[0], perm[1]) == 0
+
+
+@given(exact_vectors3(), exact_vectors3(), exact_vectors3())
+def test_triple_product_is_the_determinant_and_cyclic(a, b, c) -> None:
+    """A . (B x C) = det [A; B; C] = eps_ijk A_i B_j C_k (1.A.6), unchanged by a cyclic
+    shift and reversed by a swap."""
+    t = vectors.triple_product(a, b, c)
+    assert t == vectors.dot(a, vectors.cross(b, c))
+    assert t == vectors.determinant([a, b, c]) == vectors.determinant_by_minors([a, b, c])
+    assert t == vectors.triple_product(b, c, a) == -vectors.triple_product(b, a, c)
+
+
+@given(exact_vectors3(), exact_vectors3(), exact_vectors3())
+def test_double_cross_expansion(a, b, c) -> None:
+    """A x (B x C) = (A . C) B - (A . B) C, the first application of (1.A.7)."""
+    assert vectors.double_cross(a, b, c) == vectors.bac_cab(a, b, c)
+
+
+@given(exact_vectors3(), exact_vectors3())
+def test_cross_product_is_antisymmetric_and_normal(a, b) -> None:
+    """A x B = -B x A (anti-reflexive), it is perpendicular to both A and B, and
+    |A x B|^2 + (A . B)^2 = |A|^2 |B|^2 (sine and cosine of one angle, (1.A.1))."""
+    ab = vectors.cross(a, b)
+    assert ab == [-x for x in vectors.cross(b, a)]
+    assert vectors.dot(a, ab) == 0 == vectors.dot(b, ab)
+    assert vectors.dot(ab, ab) + vectors.dot(a, b) ** 2 == vectors.dot(a, a) * vectors.dot(b, b)
+
+
+@given(exact_square_matrices())
+def test_levi_civita_determinant_equals_minor_expansion(matrix: list[list[int]]) -> None:
+    """det U as a Levi-Civita sum equals its expansion by minors (1.A.5) and numpy's value."""
+    det = vectors.determinant(matrix)
+    assert det == vectors.determinant_by_minors(matrix)
+    assert abs(det - float(np.linalg.det(np.array(matrix, float)))) <= 1e-9 * (1 + abs(det))
+
+
+@given(
+    st.floats(min_value=0.01, max_value=100),
+    st.floats(min_value=-7, max_value=7),
+    st.floats(min_value=0.01, max_value=100),
+    st.floats(min_value=-7, max_value=7),
+)
+def test_polar_products_equal_component_products(la, ta, lb, tb) -> None:
+    """A . B = AB cos(theta_B - theta_A) = Ax Bx + Ay By and
+    A x B = AB sin(theta_B - theta_A) = Ax By - Ay Bx (1.A.1a-b)."""
+    a = (la * math.cos(ta), la * math.sin(ta))
+    b = (lb * math.cos(tb), lb * math.sin(tb))
+    p = vectors.polar_products(la, ta, lb, tb)
+    scale = 1e-12 * (1 + la * lb) * 10
+    assert abs(p.dot - vectors.dot(a, b)) <= scale
+    assert abs(p.cross - vectors.plane_cross(a, b)) <= scale
+
+
+@given(exact_plane_vectors(), exact_plane_vectors())
+def test_triangles_are_half_the_cross_product(a, b) -> None:
+    """By Heron's formula the parallelogram of A and B has area |A x B| and the A+B and A-B
+    triangles half of it (Fig. 1.A.2), exactly."""
+    assume(vectors.plane_cross(a, b) != 0)
+    r = vectors.area_ratios(a, b)
+    assert r.parallelogram == 1
+    assert r.sum_triangle == Fraction(1, 2) == r.difference_triangle

@@ -1,0 +1,221 @@
+"""Vector products, Levi-Civita symbols, determinants and triple products (Appendix 1.A).
+
+The dot product A.B = AB cos(theta_B - theta_A) and the cross product
+A x B = AB sin(theta_B - theta_A) of plane vectors (1.A.1), the Kronecker delta and the totally
+antisymmetric Levi-Civita symbol epsilon_ijk (1.A.3), the products written with them (1.A.4),
+determinants as Levi-Civita sums and by minors (1.A.5), the triple product (1.A.6), the
+epsilon-delta identity (1.A.7) and the double cross product A x (B x C) = (A.C) B - (A.B) C.
+Areas of parallelograms and triangles (Fig. 1.A.2) are computed independently of the cross
+product, by Heron's formula, so that the book's |A x B| and 1/2 |A x B| can be checked.
+
+Plain operators throughout: ``int`` and ``Fraction`` components give exact results (Heron's
+formula works with the squares of the sides, so areas of rational triangles stay exact where
+they are rational); floats give floats. Indices are 1-based as in the book.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+from mechmodel import inputs
+
+DIMENSIONS = 3
+
+
+def _vector(v: Sequence[Any], name: str, size: int | None = None) -> list[Any]:
+    out = [inputs.real(c, f"{name} component") for c in v]
+    if size is not None and len(out) != size:
+        raise ValueError(f"{name} must have {size} components, got {len(out)}")
+    return out
+
+
+def kronecker(i: Any, j: Any) -> int:
+    """delta_ij = 1 if i = j else 0 (1.A.3a)."""
+    return 1 if inputs.count(i, "i", 1) == inputs.count(j, "j", 1) else 0
+
+
+def permutation_sign(indices: Sequence[Any]) -> int:
+    """Sign of a sequence of distinct indices as a permutation of its sorted order: +1 for an
+    even number of inversions, -1 for an odd number, 0 if an index repeats."""
+    idx = [inputs.count(i, "index", 1) for i in indices]
+    if len(set(idx)) != len(idx):
+        return 0
+    inversions = sum(1 for a, b in itertools.combinations(idx, 2) if a > b)
+    return -1 if inversions % 2 else 1
+
+
+def levi_civita(*indices: Any) -> int:
+    """epsilon_{i j k ...} of N = len(indices) indices from 1..N (1.A.3a): +1 for an even
+    permutation of (1 2 ... N), -1 for an odd one, 0 otherwise."""
+    n = len(indices)
+    if any(not 1 <= inputs.count(i, "index", 1) <= n for i in indices):
+        return 0
+    return permutation_sign(indices)
+
+
+def dot(a: Sequence[Any], b: Sequence[Any]) -> Any:
+    """A.B = delta_ij A_i B_j = sum_i A_i B_i (1.A.4a)."""
+    a, b = _vector(a, "A"), _vector(b, "B", len(a))
+    return sum(kronecker(i + 1, j + 1) * a[i] * b[j] for i in range(len(a)) for j in range(len(b)))
+
+
+def cross(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
+    """(A x B)_k = epsilon_ijk A_i B_j (1.A.4b), three dimensions."""
+    a, b = _vector(a, "A", DIMENSIONS), _vector(b, "B", DIMENSIONS)
+    return [
+        sum(
+            levi_civita(i + 1, j + 1, k + 1) * a[i] * b[j]
+            for i in range(DIMENSIONS)
+            for j in range(DIMENSIONS)
+        )
+        for k in range(DIMENSIONS)
+    ]
+
+
+def plane_cross(a: Sequence[Any], b: Sequence[Any]) -> Any:
+    """The scalar cross product A_x B_y - A_y B_x of plane vectors (1.A.1b)."""
+    a, b = _vector(a, "A", 2), _vector(b, "B", 2)
+    return a[0] * b[1] - a[1] * b[0]
+
+
+@dataclass(frozen=True)
+class PolarProducts:
+    """Dot and cross products of plane vectors given by lengths and angles (1.A.1)."""
+
+    dot: float
+    cross: float
+
+
+def polar_products(length_a: Any, angle_a: Any, length_b: Any, angle_b: Any) -> PolarProducts:
+    """A.B = AB cos(theta_B - theta_A) and A x B = AB sin(theta_B - theta_A) (1.A.1), the
+    longitudinal and transverse projections of Fig. 1.A.1."""
+    for x, name in ((length_a, "A"), (angle_a, "theta_A"), (length_b, "B"), (angle_b, "theta_B")):
+        inputs.real(x, name)
+    d = angle_b - angle_a
+    return PolarProducts(
+        dot=length_a * length_b * math.cos(d), cross=length_a * length_b * math.sin(d)
+    )
+
+
+def determinant(matrix: Sequence[Sequence[Any]]) -> Any:
+    """det U = sum epsilon_{i j k ...} U_1i U_2j U_3k ... over all index tuples (1.A.5)."""
+    rows = [list(r) for r in matrix]
+    n = len(rows)
+    if any(len(r) != n for r in rows):
+        raise ValueError("a determinant needs a square matrix")
+    total: Any = 0
+    for perm in itertools.permutations(range(1, n + 1)):
+        term: Any = levi_civita(*perm)
+        for row, col in enumerate(perm):
+            term = term * inputs.real(rows[row][col - 1], "matrix entry")
+        total = total + term
+    return total
+
+
+def determinant_by_minors(matrix: Sequence[Sequence[Any]]) -> Any:
+    """det U expanded by minors of the first row, U11 M11 - U12 M12 + U13 M13 ... (1.A.5)."""
+    rows = [list(r) for r in matrix]
+    n = len(rows)
+    if any(len(r) != n for r in rows):
+        raise ValueError("a determinant needs a square matrix")
+    if n == 1:
+        return inputs.real(rows[0][0], "matrix entry")
+    total: Any = 0
+    for col in range(n):
+        minor = [r[:col] + r[col + 1 :] for r in rows[1:]]
+        total = total + (-1) ** col * rows[0][col] * determinant_by_minors(minor)
+    return total
+
+
+def triple_product(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> Any:
+    """A . (B x C) = epsilon_ijk A_i B_j C_k (1.A.6a), the signed volume of the parallelepiped
+    of A, B and C."""
+    a, b, c = (_vector(v, n, DIMENSIONS) for v, n in ((a, "A"), (b, "B"), (c, "C")))
+    return sum(
+        levi_civita(i + 1, j + 1, k + 1) * a[i] * b[j] * c[k]
+        for i in range(DIMENSIONS)
+        for j in range(DIMENSIONS)
+        for k in range(DIMENSIONS)
+    )
+
+
+def double_cross(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> list[Any]:
+    """A x (B x C) computed as two cross products (the left side of the identity after
+    (1.A.7))."""
+    return cross(a, cross(b, c))
+
+
+def bac_cab(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> list[Any]:
+    """(A.C) B - (A.B) C, the right side of the double-cross identity after (1.A.7)."""
+    ac, ab = dot(a, c), dot(a, b)
+    return [ac * bi - ab * ci for bi, ci in zip(b, c, strict=True)]
+
+
+def epsilon_contraction(i: Any, j: Any, m: Any, n: Any) -> int:
+    """sum_k epsilon_ijk epsilon_mnk over k = 1..3 (the left side of (1.A.7))."""
+    return sum(levi_civita(i, j, k) * levi_civita(m, n, k) for k in range(1, DIMENSIONS + 1))
+
+
+def delta_expansion(i: Any, j: Any, m: Any, n: Any) -> int:
+    """delta_im delta_jn - delta_in delta_jm (the right side of (1.A.7))."""
+    return kronecker(i, m) * kronecker(j, n) - kronecker(i, n) * kronecker(j, m)
+
+
+def heron_area_squared(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> Any:
+    """Squared area of the triangle with vertices a, b, c by Heron's formula in the squared
+    side lengths: 16 Area^2 = 4 x y - (x + y - z)^2 for squared sides x, y, z. Exact for
+    rational coordinates."""
+    pa, pb, pc = (_vector(v, "vertex") for v in (a, b, c))
+
+    def sq(u: list[Any], w: list[Any]) -> Any:
+        return sum((ui - wi) ** 2 for ui, wi in zip(u, w, strict=True))
+
+    x, y, z = sq(pa, pb), sq(pb, pc), sq(pc, pa)
+    numerator = 4 * x * y - (x + y - z) ** 2
+    if isinstance(numerator, int | Fraction):
+        return Fraction(numerator) / 16
+    return numerator / 16
+
+
+def _exact_sqrt(x: Any) -> Any:
+    if isinstance(x, int | Fraction):
+        f = Fraction(x)
+        n, d = math.isqrt(f.numerator), math.isqrt(f.denominator)
+        if n * n == f.numerator and d * d == f.denominator:
+            return Fraction(n, d)
+    return math.sqrt(x)
+
+
+@dataclass(frozen=True)
+class AreaRatios:
+    """Areas of the figures of Fig. 1.A.2 in units of |A x B|."""
+
+    parallelogram: Any
+    sum_triangle: Any
+    difference_triangle: Any
+
+
+def area_ratios(a: Sequence[Any], b: Sequence[Any]) -> AreaRatios:
+    """The parallelogram of A and B and the triangles (0, A, A+B) and (0, A, A-B) of
+    Fig. 1.A.2, their areas by Heron's formula divided by the plane cross product |A x B|:
+    1, 1/2 and 1/2. Exact for rational components (the squared ratio is a rational square)."""
+    a, b = _vector(a, "A", 2), _vector(b, "B", 2)
+    cross_ab = plane_cross(a, b)
+    if isinstance(cross_ab, int):
+        cross_ab = Fraction(cross_ab)
+    if cross_ab == 0:
+        raise ValueError("A and B are parallel: the figures have no area")
+    origin = [0 * a[0], 0 * a[1]]
+    tip_sum = [a[0] + b[0], a[1] + b[1]]
+    tip_diff = [a[0] - b[0], a[1] - b[1]]
+    parallelogram_sq = 4 * heron_area_squared(origin, a, tip_sum)  # two congruent triangles
+    return AreaRatios(
+        parallelogram=_exact_sqrt(parallelogram_sq / cross_ab**2),
+        sum_triangle=_exact_sqrt(heron_area_squared(origin, a, tip_sum) / cross_ab**2),
+        difference_triangle=_exact_sqrt(heron_area_squared(origin, a, tip_diff) / cross_ab**2),
+    )

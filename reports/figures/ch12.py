@@ -1,0 +1,266 @@
+"""Figures of chapter 12, redrawn from the model (see ``reports.figures``)."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from mechmodel.lagrange import (
+    contact_point,
+    energy_ellipse_radii,
+    envelope_height,
+    ke_ellipse_slopes,
+    legendre_transform,
+    oscillator_paths,
+    polar_jacobian,
+    polar_kajobian,
+    projectile_family,
+    trajectory_height,
+)
+from reports.figures import ellipse_points, figure, value_of
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from reference.evaluation import EvaluatedClaim
+
+
+@figure(
+    "lagrange-estrangian-hamiltonian",
+    "Figs. 12.1-12.2",
+    "The kinetic energy KE = 1 as an ellipse L(v) in velocities, a circle E(V) in quasi-velocities "
+    "V = sqrt(m) v and an ellipse H(p) in momenta, for the figure's mass ratio m1/m2 = 16 (read "
+    "from its collision slope -16). Solid: the collision line through the COM point, with the "
+    "slopes -16, -4, -1 the model gives; dashed: the COM bisector, slopes 1, 1/4, 1/16. Only in V "
+    "are the two perpendicular. Each H radius is m_k times its L radius.",
+    (
+        "ch12.fig12-1.collision-slope",
+        "ch12.fig12-1.velocity-bisector",
+        "ch12.fig12-1.quasi-collision",
+        "ch12.fig12-1.quasi-bisector",
+        "ch12.fig12-1.momentum-collision",
+        "ch12.fig12-1.momentum-bisector",
+    ),
+)
+def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    slope = value_of(claims, "ch12.fig12-1.collision-slope")
+    s = ke_ellipse_slopes(int(slope))
+    m1, m2 = float(s.mass_ratio), 1.0
+    energy = 1.0
+    radii = energy_ellipse_radii([m1, m2], energy)
+    planes = [
+        ("L(v): velocities", radii.velocity, (1, 1), s.velocity_collision, s.velocity_bisector),
+        (
+            "E(V): quasi-velocities",
+            [math.sqrt(2 * energy)] * 2,
+            (math.sqrt(m1), math.sqrt(m2)),
+            s.quasi_collision,
+            s.quasi_bisector,
+        ),
+        ("H(p): momenta", radii.momentum, (m1, m2), s.momentum_collision, s.momentum_bisector),
+    ]
+    for k, (title, (a, b), scale, collision, bisector) in enumerate(planes):
+        ax = fig.add_subplot(1, 3, k + 1)
+        x, y = ellipse_points(a, b)
+        ax.plot(x, y, color="C0")
+        # COM point: both bodies at the velocity u with KE = 1: (m1 + m2) u^2 / 2 = 1
+        u = math.sqrt(2 * energy / (m1 + m2))
+        cx, cy = scale[0] * u, scale[1] * u
+        span = 1.3 * max(a, b)
+        t = np.linspace(-span, span, 3)
+        ax.plot(t, float(bisector) * t, "--", color="0.4", lw=0.8)
+        dx = span / math.hypot(1, float(collision))
+        ax.plot([cx - dx, cx + dx], [cy - float(collision) * dx, cy + float(collision) * dx], "C3")
+        ax.plot([cx], [cy], "ko", ms=3)
+        ax.set_aspect("equal")
+        ax.set_xlim(-span, span)
+        ax.set_ylim(-span, span)
+        ax.set_title(f"{title}\ncollision {collision}, bisector {bisector}", fontsize="x-small")
+        ax.tick_params(labelsize="xx-small")
+
+
+@figure(
+    "legendre-tangent",
+    "Figs. 12.3-12.4",
+    "Legendre contact geometry with the figure's numbers: a convex L(v) = v^1.6 has value 1.0 and "
+    "slope p = 1.6 at v = 1.0; its tangent there meets the L axis at -H = -0.6, and H(p), found "
+    "numerically as max_v (p v - L), has slope v = 1.0 at p = 1.6 and a tangent meeting the H "
+    "axis at -L = -1.0. Grey: secant lines of slope p with lower intercepts (Fig. 12.4a).",
+    (
+        "ch12.fig12-3.h",
+        "ch12.fig12-3.l-intercept",
+        "ch12.fig12-3.h-intercept",
+    ),
+)
+def _legendre(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    v0 = value_of(claims, "ch12.fig12-3.v")
+    p0 = value_of(claims, "ch12.fig12-3.p")
+    l0 = value_of(claims, "ch12.fig12-3.l")
+    power = p0 * v0 / l0  # L = l0 (v/v0)^power has value l0 and slope p0 at v0
+    lag = lambda v: l0 * abs(v / v0) ** power  # noqa: E731
+    ham = lambda p: legendre_transform(lag, p, -6.0, 6.0).value  # noqa: E731
+    h0 = value_of(claims, "ch12.fig12-3.h")
+    vs = np.linspace(-0.2, 2.0, 121)
+    ps = np.linspace(-0.2, 3.0, 81)
+    ax1, ax2 = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
+    ax1.plot(vs, [lag(v) for v in vs], color="C0", label="L(v)")
+    ax1.plot(vs, p0 * vs - h0, color="C3", label=f"tangent, slope p = {p0:g}")
+    for shift in (0.3, 0.6):
+        ax1.plot(vs, p0 * vs - h0 - shift, color="0.7", lw=0.7)
+    ax1.plot([0, v0], [-h0, l0], "ko", ms=3)
+    ax1.set_title(
+        f"(a) intercept -H = {value_of(claims, 'ch12.fig12-3.l-intercept'):g}", fontsize="small"
+    )
+    ax1.set_xlabel("velocity v")
+    ax1.legend(fontsize="x-small")
+    ax2.plot(ps, [ham(p) for p in ps], color="C2", label="H(p) = max (p v - L)")
+    ax2.plot(ps, v0 * ps - l0, color="C3", label=f"tangent, slope v = {v0:g}")
+    ax2.plot([0, p0], [-l0, h0], "ko", ms=3)
+    ax2.set_title(
+        f"(b) intercept -L = {value_of(claims, 'ch12.fig12-3.h-intercept'):g}", fontsize="small"
+    )
+    ax2.set_xlabel("momentum p")
+    ax2.legend(fontsize="x-small")
+    for ax in (ax1, ax2):
+        ax.axhline(0, color="0.5", lw=0.5)
+        ax.axvline(0, color="0.5", lw=0.5)
+        ax.tick_params(labelsize="x-small")
+
+
+@figure(
+    "fountain-envelope",
+    "Figs. 12.5-12.6",
+    "The volcanoes of Io and the atomic fountain: trajectories of one speed v0 = 1 (g = 1, scaled) "
+    "at elevations every 7.5 degrees, each touching the dashed envelope "
+    "y = v0^2/(2g) - g x^2/(2 v0^2) once, at x = v0^2/(g tan a) (dots). The 45 degree path (red) "
+    "touches it at the ground; the horizontal one (green) has the envelope's shape and never "
+    "touches it.",
+    (
+        "ch12.fountain.envelope-constant-denominator",
+        "ch12.fountain.envelope-denominator",
+        "ch12.fountain.contact-tan-v0-power",
+        "ch12.fountain.envelope-shape-angle",
+    ),
+)
+def _fountain(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    fam = projectile_family()
+    v0, g = 1.0, 1.0
+    reach = v0**2 / g
+    xs = np.linspace(-1.2 * reach, 1.2 * reach, 241)
+    ax = fig.add_subplot()
+    for k in range(1, 24):
+        a = k * math.pi / 24
+        if abs(a - math.pi / 2) < 1e-9:
+            continue
+        ahead = xs[xs >= 0] if a < math.pi / 2 else xs[xs <= 0]  # from the launch point on
+        ys = [trajectory_height(x, v0, a, g) for x in ahead]
+        color = "C3" if k in (6, 18) else "C0"
+        ax.plot(ahead, ys, color=color, lw=1.2 if color == "C3" else 0.6)
+        xc, yc = contact_point(v0, a, g)
+        ax.plot([xc], [yc], "o", color="k", ms=2.5)
+    shape = float(value_of(claims, "ch12.fountain.envelope-shape-angle"))
+    ax.plot(xs, [trajectory_height(x, v0, shape, g) for x in xs], color="C2", lw=1.2)
+    ax.plot(xs, [envelope_height(x, v0, g) for x in xs], "k--", lw=1.2, label="envelope (12.17)")
+    ax.set_ylim(-0.6 * reach, 0.6 * reach)
+    ax.set_xlim(-1.2 * reach, 1.2 * reach)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (units v0^2/g)")
+    ax.set_ylabel("y")
+    ax.set_title(
+        f"y_env = v0^{fam.envelope_constant_v0_power}/({fam.envelope_constant_denominator}g) "
+        f"- g x^{fam.envelope_x_power}/({fam.envelope_quadratic_denominator} v0^"
+        f"{fam.envelope_v0_power})",
+        fontsize="small",
+    )
+    ax.legend(fontsize="x-small", loc="lower right")
+
+
+@figure(
+    "polar-bases",
+    "Fig. 12.10",
+    "Polar coordinate grid with the covariant bases E_r, E_phi (columns of the Jacobian J, "
+    "tangent to the coordinate lines; E_phi grows with r) and the contravariant bases E^r, E^phi "
+    "(rows of K = J^-1, normal to the lines; E^phi shrinks as 1/r) at three points. Their dot "
+    "products give the metric diag(1, r^2) and its inverse diag(1, 1/r^2) (12.30).",
+    (
+        "ch12.polar.metric-rr",
+        "ch12.polar.metric-rphi",
+        "ch12.polar.inverse-metric-phiphi",
+        "ch12.fig12-10.dq1",
+        "ch12.fig12-10.dq2",
+    ),
+)
+def _polar(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    ax = fig.add_subplot()
+    theta = np.linspace(0, math.pi / 2, 91)
+    for r in np.arange(0.5, 3.01, 0.5):
+        ax.plot(r * np.cos(theta), r * np.sin(theta), color="0.8", lw=0.6)
+    for phi in np.linspace(0, math.pi / 2, 7):
+        ax.plot([0, 3 * math.cos(phi)], [0, 3 * math.sin(phi)], color="0.8", lw=0.6)
+    for r, phi in ((1.0, math.pi / 6), (2.0, math.pi / 4), (2.5, math.pi / 3)):
+        j = polar_jacobian(r, phi)
+        k = polar_kajobian(r, phi)
+        x, y = r * math.cos(phi), r * math.sin(phi)
+        scale = 0.35
+        for (dx, dy), color in (
+            ((j[0][0], j[1][0]), "C0"),
+            ((j[0][1], j[1][1]), "C1"),
+        ):
+            ax.annotate(
+                "",
+                (x + scale * dx, y + scale * dy),
+                (x, y),
+                arrowprops={"arrowstyle": "->", "color": color},
+            )
+        for (dx, dy), color in (((k[0][0], k[0][1]), "C2"), ((k[1][0], k[1][1]), "C3")):
+            ax.annotate(
+                "",
+                (x + scale * dx, y + scale * dy),
+                (x, y),
+                arrowprops={"arrowstyle": "-|>", "color": color, "ls": "--"},
+            )
+    ax.plot([], [], "C0", label="E_r (covariant)")
+    ax.plot([], [], "C1", label="E_phi (covariant, length r)")
+    ax.plot([], [], "C2--", label="E^r (contravariant)")
+    ax.plot([], [], "C3--", label="E^phi (contravariant, length 1/r)")
+    ax.set_aspect("equal")
+    ax.set_xlim(-0.1, 3.3)
+    ax.set_ylim(-0.1, 3.3)
+    ax.legend(fontsize="x-small", loc="upper right")
+    ax.tick_params(labelsize="x-small")
+
+
+@figure(
+    "oscillator-phase-colour",
+    "Figs. 12.13-12.14",
+    "Phase-coloured action: paths of the 2-D oscillator (omega = M = 1) blasted from r(0) = (1,0) "
+    "with the starlet's speed |v(0)| = 1 in 72 directions (exercise 1.12.3), each coloured by its "
+    "reduced action S_H = integral p.dr in units of hbar = 1/8, modulo 2 pi, on the hue circle "
+    "of line 16324 (red 0, cyan pi). Over one period every path gathers S_H = 2 pi E = 2 pi.",
+    ("ch12.starlet.speed", "ch12.bohr.phase-turn", "ch12.palette.orange", "ch12.palette.blue"),
+)
+def _phase(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    from matplotlib.collections import LineCollection
+
+    speed = value_of(claims, "ch12.starlet.speed")
+    turn = value_of(claims, "ch12.bohr.phase-turn")
+    hbar = 1 / 8
+    angles = [2 * math.pi * k / 72 for k in range(72)]
+    paths = oscillator_paths((1.0, 0.0), speed, angles, duration=math.pi, samples=240)
+    ax = fig.add_subplot()
+    import matplotlib as mpl
+
+    cmap = mpl.colormaps["hsv"]
+    for x, y, s in zip(paths.x, paths.y, paths.action, strict=True):
+        pts = np.column_stack([x, y])
+        segs = np.stack([pts[:-1], pts[1:]], axis=1)
+        phase = ((s[:-1] + s[1:]) / 2 / hbar) % turn / turn
+        ax.add_collection(LineCollection(segs, colors=cmap(phase), linewidths=0.7))
+    ax.set_xlim(-1.6, 1.6)
+    ax.set_ylim(-1.6, 1.6)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.tick_params(labelsize="x-small")
