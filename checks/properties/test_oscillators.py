@@ -1,0 +1,307 @@
+"""Laws of the oscillator orbit, inertial forces, quadratic forms and triads
+(mechmodel.oscillators): chapter 11.
+
+Floats are compared within 1e-12 of the sum of the magnitudes involved (1e-9 where sines and
+cosines of phases up to a few turns intervene); Fraction inputs must give exact equality.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+import pytest
+from hypothesis import example, given, target
+
+from checks.properties.strategies import (
+    derivative_orders,
+    exact_distinct_radii,
+    exact_radii,
+    form_angles,
+    matrix_powers,
+    orbit_fractions,
+    orbit_omegas,
+    orbit_phases,
+    orbit_radii,
+    rational_half_angle_tans,
+    triad_indices,
+    triad_start_angles,
+)
+from mechmodel import oscillators as osc
+
+pytestmark = pytest.mark.properties
+REL = 1e-12
+TRIG = 1e-9
+
+
+def close(x: float, y: float, scale: float, rel: float = REL) -> bool:
+    return abs(x - y) <= rel * scale
+
+
+# --- the orbit and its conserved quantities (11.5), (11.21)-(11.22), Fig. 11.8 --------------
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases())
+@example(2.2, 1.0, 1.0, 1.0)  # the ellipse of Fig. 11.1
+def test_angular_momentum_is_constant_on_the_orbit(a: float, b: float, w: float, u: float) -> None:
+    """r x v = a b w at every time (11.21): the orbital angular momentum L = m a b w (11.22)
+    is conserved."""
+    mass = 1.7
+    value = osc.angular_momentum(mass, a, b, w, u / w)
+    expected = mass * a * b * w
+    error = abs(value - expected) / expected
+    target(error, label="relative angular momentum error")
+    assert error <= TRIG
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases())
+def test_energy_is_constant_on_the_orbit(a: float, b: float, w: float, u: float) -> None:
+    """1/2 m v.v + 1/2 m w^2 r.r = 1/2 m w^2 (a^2 + b^2) at every time: the oscillator's energy
+    is conserved (exercise 1.11.1(b), k = m w^2 (11.2b))."""
+    mass = 0.3
+    value = osc.orbit_energy(mass, a, b, w, u / w)
+    expected = mass * w * w * (a * a + b * b) / 2
+    assert close(value, expected, expected, TRIG)
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases(), orbit_phases())
+@example(2.2, 1.0, 1.0, 0.0, math.pi / 3)  # the snapshots t = 0 and pi/3w of Fig. 11.8
+def test_equal_areas_in_equal_times(a: float, b: float, w: float, u0: float, u1: float) -> None:
+    """The radius sweeps the same area in any two equal time intervals, the areal velocity
+    times the interval (Kepler's law, Fig. 11.8): the sectors are measured geometrically, from
+    the end points' clock hands (Fig. 11.1), not from the time."""
+    dt = 0.37 * osc.orbit_period(w)
+    first = osc.swept_area(a, b, w, u0 / w, u0 / w + dt)
+    second = osc.swept_area(a, b, w, u1 / w, u1 / w + dt)
+    rate = osc.areal_velocity(a, b, w) * dt
+    assert close(first, second, rate, TRIG)
+    assert close(first, rate, rate, TRIG)
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases())
+def test_area_law_coefficient_is_one_half(a: float, b: float, w: float, u: float) -> None:
+    """dA/dt = 1/2 |r x v| (text after Fig. 11.8): the whole orbit pi a b per period over
+    r x v = a b w."""
+    assert close(osc.area_law_coefficient(a, b, w, u / w), 0.5, 1.0, TRIG)
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas())
+@example(2.2, 1.0, 1.0)
+def test_apsis_speeds_follow_from_angular_momentum(a: float, b: float, w: float) -> None:
+    """v_b = L/(m b) = a w at perigee and v_a = L/(m a) = b w at apogee (text after
+    Fig. 11.8) agree with the velocity formula (11.5b) at t = 0 and t = pi/2w."""
+    speeds = osc.apsis_speeds(a, b, w)
+    v0 = osc.orbit_velocity(a, b, w, 0.0)
+    v1 = osc.orbit_velocity(a, b, w, osc.time_to_perigee(w))
+    assert close(speeds.apogee, math.hypot(*v0), (a + b) * w, TRIG)
+    assert close(speeds.perigee, math.hypot(*v1), (a + b) * w, TRIG)
+    assert close(speeds.ratio, a / b, a / b)
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases(), derivative_orders())
+def test_every_second_derivative_is_minus_omega_squared_times(
+    a: float, b: float, w: float, u: float, n: int
+) -> None:
+    """Hooke's law F = -k r gives a = -w^2 r, j = -w^2 v, ..., r^(n+2) = -w^2 r^(n), and the
+    fourth derivative is w^4 r (11.5b)-(11.5d)."""
+    t = u / w
+    here = osc.orbit_derivative(a, b, w, t, n)
+    two_on = osc.orbit_derivative(a, b, w, t, n + 2)
+    scale = (a + b) * w ** (n + 2)
+    for c, d in zip(here, two_on, strict=True):
+        assert close(d, -w * w * c, scale, TRIG)
+    assert osc.orbit_derivative_form(n + 4).omega_power == n + 4
+    four_on = osc.orbit_derivative_form(n + 4)
+    form = osc.orbit_derivative_form(n)
+    assert (four_on.x_function, four_on.y_function) == (form.x_function, form.y_function)
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases(), derivative_orders())
+def test_derivatives_follow_the_orbit_a_quarter_turn_apart(
+    a: float, b: float, w: float, u: float, n: int
+) -> None:
+    """r^(n)(t)/w^n = r at phase wt + n pi/2: the four vectors r, v/w, a/w^2, j/w^3 follow each
+    other on one ellipse (11.6), Fig. 11.5."""
+    t = u / w
+    scaled = [c / w**n for c in osc.orbit_derivative(a, b, w, t, n)]
+    advance = osc.derivative_phase(n)
+    assert close(advance, (n % 4) * math.pi / 2, 1.0)
+    ahead = osc.orbit_position(a, b, w, t + advance / w)
+    for c, d in zip(scaled, ahead, strict=True):
+        assert close(c, d, a + b, TRIG)
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_fractions())
+def test_power_is_the_rate_of_kinetic_energy(a: float, b: float, w: float, turns: float) -> None:
+    """P = F.V = d(KE)/dt, positive while the mass falls toward perigee and negative while it
+    rises (Fig. 11.3); F and V are perpendicular only at apogee and perigee."""
+    mass = 1.3
+    t = turns * osc.orbit_period(w)
+    h = 1e-6 * osc.orbit_period(w)
+
+    def kinetic(time: float) -> float:
+        v = osc.orbit_velocity(a, b, w, time)
+        return mass * (v[0] ** 2 + v[1] ** 2) / 2
+
+    numeric = (kinetic(t + h) - kinetic(t - h)) / (2 * h)
+    power = osc.force_power(mass, a, b, w, turns)
+    scale = mass * w**3 * (a * a + b * b)
+    assert close(power, numeric, scale, 1e-6)
+    angle = osc.force_velocity_angle(a, b, w, turns)
+    if abs(power) > 1e-9 * scale:
+        assert (angle < math.pi / 2) == (power > 0)
+
+
+# --- centrifugal and tidal forces (11.2)-(11.3), p. 171 --------------------------------------
+
+
+@given(orbit_omegas(), orbit_radii())
+def test_centrifugal_force_has_both_famous_forms(w: float, r: float) -> None:
+    """m w^2 r = m V^2/r with V = w r (11.3a); the circle of curvature of that motion has
+    radius V^2/a = r (11.3c)."""
+    mass = 2.5
+    v = w * r
+    force = osc.centrifugal_force(mass, w, r)
+    assert close(force, mass * osc.centrifugal_acceleration(v, r), force)
+    assert close(osc.curvature_radius(v, force / mass), r, r)
+
+
+@given(exact_radii(), exact_radii())
+def test_spring_constant_inverts_the_frequency(k: Fraction, m: Fraction) -> None:
+    """k = m w^2 (11.2b) undoes w = sqrt(k/m) (11.2a): exactly, where k/m is a square."""
+    w = osc.oscillator_frequency(k * k * m, m)
+    assert w == k
+    assert osc.spring_constant(m, w) == k * k * m
+
+
+@given(orbit_omegas())
+def test_neighbouring_orbits_cross_twice_a_period(f: float) -> None:
+    """Two free-fall orbits a little apart cross twice each period (p. 171: 2000 times a
+    second at 1 kHz), whatever the frequency."""
+    assert osc.tidal_crossings_per_second(f) == 2 * f
+
+
+# --- quadratic forms (11.7)-(11.20), exercise 1.11.1 -----------------------------------------
+
+
+@given(exact_radii(), exact_radii(), rational_half_angle_tans())
+def test_duality_relations_hold_exactly(a: Fraction, b: Fraction, s: Fraction) -> None:
+    """With p = Q.r on the orbit r.Q.r = 1: r'.p = 0 = p'.r, p.r = p'.r' = 1, and p lies on
+    p.Q^-1.p = 1 ((11.8b), (11.9), (11.10c), (11.17))."""
+    d = osc.duality_products(a, b, s)
+    assert d.r_form == 1
+    assert d.p_dual_form == 1
+    assert d.p_dot_r == 1
+    assert d.pdot_dot_rdot == 1
+    assert d.rdot_dot_p == 0
+    assert d.pdot_dot_r == 0
+
+
+@given(exact_radii(), exact_radii())
+def test_dual_ellipse_radii_are_inverse(a: Fraction, b: Fraction) -> None:
+    """The p-ellipse p.Q^-1.p = 1 has radii 1/a and 1/b (11.9), and the axis vectors are
+    eigenvectors of Q with eigenvalues 1/a^2 and 1/b^2 (11.15c,d)."""
+    dual = osc.dual_ellipse(a, b)
+    assert (dual.radius_x, dual.radius_y) == (1 / a, 1 / b)
+    eigen = osc.axis_eigenvalues(a, b, 2)
+    assert (eigen.a_axis, eigen.b_axis) == (1 / a**2, 1 / b**2)
+
+
+@given(exact_radii(), exact_radii(), matrix_powers())
+def test_powers_of_r_multiply_slopes_by_powers_of_a_over_b(
+    a: Fraction, b: Fraction, power: int
+) -> None:
+    """R^p multiplies the slope of any vector by (a/b)^p ((11.12)-(11.13), (11.16)) and keeps
+    the axis vectors, with eigenvalues a^-p and b^-p (11.14)-(11.15)."""
+    assert osc.slope_gain(a, b, power) == (a / b) ** power
+    eigen = osc.axis_eigenvalues(a, b, power)
+    assert (eigen.a_axis, eigen.b_axis) == (a**-power, b**-power)
+    if a != b:
+        assert osc.slope_gain_exponent(a, b, power) == power
+
+
+@given(exact_radii(), exact_radii())
+def test_scaled_radii_are_reciprocal(a: Fraction, b: Fraction) -> None:
+    """Scaled by S = sqrt(ab), a_S = 1/b_S (11.11): exactly when ab is a rational square."""
+    scaled = osc.scaled_radii(a * a * b, b)
+    assert scaled.product == 1
+    assert scaled.a_scaled == 1 / scaled.b_scaled
+
+
+@given(orbit_radii(), orbit_radii())
+def test_inverse_ellipse_is_a_quarter_turn(a: float, b: float) -> None:
+    """The S-scaled inverse ellipse r.Q^-1.r = 1 is the S-scaled Q-ellipse turned by 90
+    degrees (after (11.11))."""
+    if abs(a - b) < 1e-3 * (a + b):
+        return
+    assert close(osc.inverse_ellipse_rotation(a, b), math.pi / 2, 1.0, TRIG)
+
+
+@given(orbit_radii(), orbit_radii(), form_angles())
+@example(1.0, 2.0, math.pi / 4)
+def test_rotated_form_keeps_its_eigenvalues(a: float, b: float, angle: float) -> None:
+    """Q' = Rot Q Rot^-1 has the eigenvalues 1/a^2 and 1/b^2 whatever the angle, so its trace
+    and determinant are invariant, and its ellipse has the radii a and b again (exercise
+    1.11.1(a), (b))."""
+    form = osc.rotated_form(a, b, angle)
+    hi, lo = osc.form_eigenvalues(form.A, form.B, form.C)
+    e1, e2 = sorted((1 / a**2, 1 / b**2), reverse=True)
+    scale = e1 + e2
+    assert close(hi, e1, scale, TRIG)
+    assert close(lo, e2, scale, TRIG)
+    assert close(form.A + form.C, e1 + e2, scale, TRIG)
+    assert close(form.A * form.C - form.B**2, e1 * e2, scale * scale, TRIG)
+    ellipse = osc.ellipse_from_form(form.A, form.B, form.C)
+    radii = sorted((ellipse.radius, ellipse.other_radius))
+    assert close(radii[0], min(a, b), a + b, 1e-6)
+    assert close(radii[1], max(a, b), a + b, 1e-6)
+
+
+@given(exact_radii(), exact_radii(), rational_half_angle_tans())
+def test_form_expands_to_a_x2_plus_2b_xy_plus_c_y2(a: Fraction, b: Fraction, s: Fraction) -> None:
+    """(x y).(A B; B C).(x y) = A x^2 + 2B xy + C y^2 (11.20), exactly."""
+    A, B, C = a, b - a, s  # noqa: N806
+    x, y = a + s, b - 1
+    e = osc.form_expansion(A, B, C) if B != 0 else None
+    value = osc.form_value(((A, B), (B, C)), (x, y))
+    assert value == A * x * x + 2 * B * x * y + C * y * y
+    if e is not None:
+        assert (e.xx, e.xy, e.yy, e.cross_factor) == (A, 2 * B, C, 2)
+
+
+@given(exact_radii(), exact_radii())
+def test_opposite_eigenvalues_give_a_hyperbola(a: Fraction, b: Fraction) -> None:
+    """Eigenvalues 1/a^2 and -1/b^2 make r.Q.r = 1 a hyperbola (exercise 1.11.1(c)); two
+    positive ones an ellipse."""
+    assert osc.conic_type(1 / a**2, 0, -1 / b**2) == "hyperbola"
+    assert osc.conic_type(1 / a**2, 0, 1 / b**2) == "ellipse"
+
+
+# --- triads (11.16)-(11.19), Fig. 11.7 --------------------------------------------------------
+
+
+@given(exact_distinct_radii(), triad_start_angles(), triad_indices())
+@example((Fraction(2), Fraction(1, 2)), math.pi / 4, 0)  # the triad of Fig. 11.7(a)
+def test_triad_slopes_form_a_geometric_series(
+    ab: tuple[Fraction, Fraction], phi0: float, k: int
+) -> None:
+    """tan phi_k = (a/b)^k tan phi_0: each step of the triad sequence multiplies the slope by
+    a/b ((11.16), (11.19), Fig. 11.7)."""
+    a, b = ab
+    expected = float(a / b) ** k * math.tan(phi0)
+    assert close(osc.triad_slope(a, b, phi0, k), expected, expected, TRIG)
+
+
+@given(exact_distinct_radii(), triad_start_angles(), triad_indices())
+def test_triad_radius_and_perpendicular_are_dual(
+    ab: tuple[Fraction, Fraction], phi0: float, k: int
+) -> None:
+    """In the k-th triad r(phi_k-1) lies on the Q-ellipse, p(phi_k+1) = Q.r(phi_k-1) projects 1
+    on it and has the polar angle phi_k+1 (11.17)."""
+    a, b = ab
+    v = osc.triad_vectors(a, a * b, phi0, k)
+    q = osc.ellipse_form(float(a), float(b))
+    assert close(osc.form_value(q, v.r), 1.0, 1.0, TRIG)
+    assert close(osc.dot(v.p, v.r), 1.0, 1.0, TRIG)
+    phi_next = osc.triad_angle(a, b, phi0, k + 1)
+    assert close(math.atan2(v.p[1], v.p[0]), phi_next, 1.0, TRIG)

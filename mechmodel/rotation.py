@@ -1,0 +1,274 @@
+"""Rotating point masses and rods: inertia, impulse, percussion and cycloids (chapter 11).
+
+A mass m on a circle of radius r at angular velocity w moves at V = w r, so its kinetic energy
+1/2 m V^2 is 1/2 m r^2 w^2 = 1/2 I w^2 and its angular momentum m V r is m r^2 w = I w, with the
+rotational inertia I = m r^2 in place of m and w in place of V ((11.23)-(11.24)). A uniform rod
+turning about one end sums I = integral of r^2 dm = rho l^3/3 = M l^2/3 (11.25); two such rods
+welded end to end (a free rod of half-length l, "radius" l) have the same I = M l^2/3 about
+their centre. An impulse Pi struck at height h above the centre gives the centre the velocity
+V = Pi/M and the rod the spin w = Pi h/I; the point at distance p = V/w on the other side is
+momentarily at rest: the centre of percussion, h p = I/M = l^2/3 (Fig. 11.10). The rod
+"rolls" on a tire of radius p: points of the rod trace cycloids, normal at distance p, prolate
+inside and curlate (looped) outside (Fig. 11.9). Where h = p both equal the radius of gyration
+sqrt(I/M) = l/sqrt(3).
+
+Types: masses, lengths and impulses are floats or ``fractions.Fraction``; inertia, impulse
+response and percussion radii stay exact for rational inputs. Exponents and coefficients of the
+formulas are found from the physics with exact arithmetic, not written in: the power of r in
+the energy is read off from how the energy grows when r doubles.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Any
+
+from mechmodel import inputs
+
+# sample values for reading off the form of a formula: distinct primes, exact
+_SAMPLE_MASS = Fraction(3)
+_SAMPLE_RADIUS = Fraction(5)
+_SAMPLE_OMEGA = Fraction(7)
+
+
+def _rational(*values: Any) -> bool:
+    return all(isinstance(v, int | Fraction) for v in values)
+
+
+def _div(x: Any, y: Any) -> Any:
+    return Fraction(x) / Fraction(y) if _rational(x, y) else x / y
+
+
+def power_of(law: Callable[..., Any], name: str, **values: Any) -> int:
+    """The exponent n of ``name`` in a monomial law: law(name = 2x) / law(name = x) = 2^n,
+    found with exact arithmetic (an error if the ratio is no integer power of 2)."""
+    doubled = dict(values, **{name: 2 * values[name]})
+    ratio = Fraction(law(**doubled)) / Fraction(law(**values))
+    for n in range(-8, 9):
+        if Fraction(2) ** n == ratio:
+            return n
+    raise ValueError(f"{name} does not enter as a power")
+
+
+# -- a point mass on a circle (11.23)-(11.24) ---------------------------------------------------
+def tangential_speed(radius: Any, omega: Any) -> Any:
+    """Linear speed V = w r of a point at radius r turning at w (before (11.23))."""
+    inputs.real(radius, "radius")
+    inputs.real(omega, "omega")
+    return omega * radius
+
+
+def rotation_energy(mass: Any, radius: Any, omega: Any) -> Any:
+    """Kinetic energy 1/2 m V^2 of a point mass turning at w on a circle of radius r, with
+    V = w r (11.23)."""
+    inputs.mass(mass)
+    v = tangential_speed(radius, omega)
+    return mass * v * v / 2
+
+
+def point_angular_momentum(mass: Any, radius: Any, omega: Any) -> Any:
+    """Angular momentum Pi r = m V r of a point mass on a circle, V = w r (11.24)."""
+    inputs.mass(mass)
+    return mass * tangential_speed(radius, omega) * radius
+
+
+def point_inertia(mass: Any, radius: Any) -> Any:
+    """Rotational inertia I = L/w, the factor that takes the place of m (after (11.24)): m r^2."""
+    return _div(point_angular_momentum(mass, radius, _SAMPLE_OMEGA), _SAMPLE_OMEGA)
+
+
+@dataclass(frozen=True)
+class RotationForm:
+    """The form of a point mass's rotational energy and angular momentum (11.23)-(11.24):
+    E = energy_coefficient m^energy_mass_power r^energy_radius_power w^energy_omega_power,
+    E = inertia_coefficient I w^inertia_omega_power, L = m r^momentum_radius_power
+    w^momentum_omega_power, I = m r^inertia_radius_power."""
+
+    energy_coefficient: Fraction
+    energy_mass_power: int
+    energy_radius_power: int
+    energy_omega_power: int
+    inertia_coefficient: Fraction
+    inertia_omega_power: int
+    momentum_radius_power: int
+    momentum_omega_power: int
+    inertia_radius_power: int
+
+
+def rotation_form() -> RotationForm:
+    """Read the exponents and coefficients of (11.23)-(11.24) off the physics at exact sample
+    values: substitute V = w r into 1/2 m V^2 and m V r."""
+    m, r, w = _SAMPLE_MASS, _SAMPLE_RADIUS, _SAMPLE_OMEGA
+    sample = {"mass": m, "radius": r, "omega": w}
+    e_powers = [power_of(rotation_energy, name, **sample) for name in ("mass", "radius", "omega")]
+    l_powers = [power_of(point_angular_momentum, name, **sample) for name in ("radius", "omega")]
+    energy = Fraction(rotation_energy(m, r, w))
+    inertia = point_inertia(m, r)
+    e_coefficient = energy / (m ** e_powers[0] * r ** e_powers[1] * w ** e_powers[2])
+
+    def energy_of_inertia(omega: Any) -> Any:
+        return rotation_energy(m, r, omega) / inertia
+
+    i_power = power_of(energy_of_inertia, "omega", omega=w)
+    return RotationForm(
+        e_coefficient,
+        *e_powers,
+        energy / (inertia * w**i_power),
+        i_power,
+        *l_powers,
+        power_of(point_inertia, "radius", mass=m, radius=r),
+    )
+
+
+# -- rods (11.25) -------------------------------------------------------------------------------
+def rod_inertia_about_end(density: Any, length: Any) -> Any:
+    """I = integral from 0 to l of rho r^2 dr (11.25): the antiderivative of rho r^2 is
+    rho r^3/3 (power rule for integrals: r^n -> r^(n+1)/(n+1)). Exact for rational input."""
+    inputs.positive(density, "density")
+    inputs.positive(length, "length")
+    n = 2  # dI = r^2 dm
+    return _div(density * length ** (n + 1), n + 1)
+
+
+@dataclass(frozen=True)
+class RodInertiaForm:
+    """I = density_coefficient rho l^density_length_power = mass_coefficient M l^mass_length_power
+    for a uniform rod about one end (11.25)."""
+
+    density_coefficient: Fraction
+    density_length_power: int
+    mass_coefficient: Fraction
+    mass_length_power: int
+
+
+def rod_inertia_form() -> RodInertiaForm:
+    """Read (11.25) off the integral at exact sample values: the power of l at fixed rho, then
+    at fixed M = rho l."""
+    rho, length = _SAMPLE_MASS, _SAMPLE_RADIUS
+    p_rho = power_of(rod_inertia_about_end, "length", density=rho, length=length)
+
+    def at_fixed_mass(mass: Any, length: Any) -> Any:
+        return rod_inertia_about_end(_div(mass, length), length)
+
+    mass = rho * length
+    p_mass = power_of(at_fixed_mass, "length", mass=mass, length=length)
+    inertia = Fraction(rod_inertia_about_end(rho, length))
+    return RodInertiaForm(
+        inertia / (rho * length**p_rho), p_rho, inertia / (mass * length**p_mass), p_mass
+    )
+
+
+def free_rod_inertia(mass: Any, half_length: Any) -> Any:
+    """Inertia about the centre of a free rod of mass M and half-length l: two rods of mass M/2
+    and length l welded end to end, each turning about its end (after (11.25)): M l^2/3."""
+    inputs.mass(mass)
+    half = _div(mass, 2)
+    return 2 * rod_inertia_about_end(_div(half, half_length), half_length)
+
+
+@dataclass(frozen=True)
+class ImpulseResponse:
+    """A free rod struck across its length: centre-of-mass velocity V = Pi/M, angular momentum
+    Lambda = Pi h, angular velocity w = Lambda/I, percussion radius p = V/w (the point on the
+    other side of the centre at rest), and h p with h p / l^2 (Fig. 11.10)."""
+
+    cm_velocity: Any
+    angular_momentum: Any
+    angular_velocity: Any
+    percussion_radius: Any
+    hit_percussion_product: Any
+    product_coefficient: Any
+
+
+def rod_impulse(mass: Any, half_length: Any, impulse: Any, hit_height: Any) -> ImpulseResponse:
+    """Response of a free rod (mass M, half-length l) to an impulse Pi at height h > 0 above its
+    centre (Fig. 11.10): translation V = Pi/M and rotation w = Pi h/I cancel at distance
+    p = V/w = I/(M h) on the far side."""
+    inputs.positive(half_length, "half_length")
+    inputs.positive(impulse, "impulse")
+    inputs.positive(hit_height, "hit_height")
+    inertia = free_rod_inertia(mass, half_length)
+    v = _div(impulse, mass)
+    spin_momentum = impulse * hit_height
+    w = _div(spin_momentum, inertia)
+    p = _div(v, w)
+    hp = hit_height * p
+    return ImpulseResponse(v, spin_momentum, w, p, hp, _div(hp, half_length**2))
+
+
+def percussion_radius(half_length: Any, hit_height: Any) -> Any:
+    """Percussion radius p of a free rod of half-length l struck at height h (any M, Pi)."""
+    return rod_impulse(1, half_length, 1, hit_height).percussion_radius
+
+
+def percussion_divisor(half_length: Any, hit_height: Any) -> Any:
+    """l/p: the rod's half-length over the percussion radius (3 for a hit at the end, h = l,
+    p = l/3: its minimum, text after Fig. 11.10)."""
+    return _div(half_length, percussion_radius(half_length, hit_height))
+
+
+def percussion_fraction(half_length: Any, hit_divisor: Any) -> Any:
+    """p/l for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/2 gives p = 2l/3)."""
+    inputs.positive(hit_divisor, "hit_divisor")
+    return _div(percussion_radius(half_length, _div(half_length, hit_divisor)), half_length)
+
+
+def radius_of_gyration(rod_length: Any) -> float:
+    """Radius of gyration sqrt(I/M) about the centre of a free rod of total length L = 2l:
+    l/sqrt(3) (text after Fig. 11.10)."""
+    inputs.positive(rod_length, "rod_length")
+    half = _div(rod_length, 2)
+    return math.sqrt(free_rod_inertia(1, half))
+
+
+def gyration_divisor(rod_length: Any) -> float:
+    """l over the radius of gyration (the sqrt(3) of p = l/sqrt(3), text after Fig. 11.10)."""
+    return _div(rod_length, 2) / radius_of_gyration(rod_length)
+
+
+def sweet_spot(half_length: Any) -> float:
+    """The hit height h at which the percussion radius p equals h (text after Fig. 11.10):
+    h p = l^2/3 with p = h, found by bisection on p(h) - h (p falls and h rises)."""
+    inputs.positive(half_length, "half_length")
+    length = float(half_length)
+    lo, hi = length / 1e6, length
+    while hi - lo > 1e-13 * length:
+        mid = (lo + hi) / 2
+        if percussion_radius(length, mid) > mid:
+            lo = mid
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
+# -- cycloids of a free rod (Fig. 11.9) ---------------------------------------------------------
+def rod_point_position(
+    mass: Any, half_length: Any, impulse: Any, hit_height: Any, offset: Any, t: Any
+) -> tuple[float, float]:
+    """Position at time t of the point at signed distance ``offset`` from the centre along a
+    rod struck at t = 0 while it stood upright (Fig. 11.9): the centre moves at V along x, the
+    rod turns clockwise at w, so the point is at (V t + s sin wt, s cos wt); the point at
+    s = -p touches the "road" y = -p at rest."""
+    inputs.real(offset, "offset")
+    inputs.real(t, "t")
+    response = rod_impulse(mass, half_length, impulse, hit_height)
+    v, w = float(response.cm_velocity), float(response.angular_velocity)
+    return (v * t + offset * math.sin(w * t), offset * math.cos(w * t))
+
+
+def cycloid_kind(offset: Any, percussion_radius: Any) -> str:
+    """The cycloid a rod point traces on the tire of radius p (Fig. 11.9): the centre a line,
+    |s| < p prolate, |s| = p normal (with cusps), |s| > p curlate (looped)."""
+    inputs.real(offset, "offset")
+    inputs.positive(percussion_radius, "percussion_radius")
+    s = abs(offset)
+    if s == 0:
+        return "line"
+    if s < percussion_radius:
+        return "prolate"
+    if s == percussion_radius:
+        return "normal"
+    return "curlate"
