@@ -27,13 +27,18 @@ from reference.book import Book, BookError, book_path, load_book
 from reference.catalog import Catalog
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
+from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
 
 IN_CI = os.environ.get("CI", "").lower() == "true"
 MIN_EXAMPLES = 50  # the ci profile's floor: speed never hollows a property out
 
-settings.register_profile("ci", derandomize=True, deadline=None, max_examples=MIN_EXAMPLES)
+# ci: derandomized and without the example database, whose reads and writes cost more than
+# the examples of most properties
+settings.register_profile(
+    "ci", derandomize=True, deadline=None, max_examples=MIN_EXAMPLES, database=None
+)
 settings.register_profile("dev", deadline=None, max_examples=MIN_EXAMPLES)
 settings.register_profile("thorough", deadline=None, max_examples=MIN_EXAMPLES * 10)
 settings.load_profile("ci" if IN_CI else "dev")
@@ -113,16 +118,23 @@ def evaluation(pytestconfig: pytest.Config, book: Book) -> Evaluation:
 
 
 @pytest.fixture(scope="session")
-def report_dir(tmp_path_factory: pytest.TempPathFactory, book: Book) -> Path:
-    """One report, built by ``bangcheck report`` once per session for the report and browser
-    tests."""
-    from reports.cli import main
+def report_dir(
+    tmp_path_factory: pytest.TempPathFactory, evaluation: Evaluation, whole_scan: ScanResult
+) -> Path:
+    """One report of the whole book, built once per session from the session's evaluation for
+    the report and browser tests (the command itself is tested on one chapter)."""
+    from reports.output import write_atomically
+    from reports.page import build_report
 
     out = tmp_path_factory.mktemp("report") / "out"
-    nothing = out.parent / "no-properties.json"  # the page shows no invariants section
-    argv = ["report", "--book", str(book.path), "--out", str(out), "--properties", str(nothing)]
-    assert main(argv) == 0
+    write_atomically(out, build_report(evaluation, whole_scan, evaluation.catalog, None))
     return out
+
+
+@pytest.fixture(scope="session")
+def whole_scan(book: Book, catalog: Catalog) -> ScanResult:
+    """The scan of the whole book, once per session."""
+    return scan(book, catalog, tuple(c.key for c in book.identity.chapters))
 
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)

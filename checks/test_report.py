@@ -19,7 +19,9 @@ import pytest
 from reference.book import Book
 from reference.catalog import Catalog
 from reference.evaluation import Evaluation, evaluate_catalog
-from reference.scan import scan
+from reference.scan import ScanResult, scan
+from reports.cli import main
+from reports.figures import registered
 from reports.output import ERRATA_COLUMNS, claims_json, errata_csv, write_atomically
 from reports.page import errata_rows, render_page, report_meta
 
@@ -116,6 +118,27 @@ def page(report_dir: Path) -> Page:
     return parse((report_dir / "index.html").read_text(encoding="utf-8"))
 
 
+def test_every_figure_is_drawn(report_dir: Path) -> None:
+    html = (report_dir / "index.html").read_text("utf-8")
+    keys = [spec.key for spec in registered()]
+    assert len(keys) == len(set(keys))
+    assert [k for k in keys if f'<figure id="figure-{k}">' not in html] == []
+
+
+def test_the_command_writes_a_report_of_one_chapter(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "out"
+    argv = ["report", "--book", str(book.path), "--chapter", "3", "--out", str(out)]
+    assert main([*argv, "--properties", str(tmp_path / "none.json")]) == 0
+    assert capsys.readouterr().out.strip() == str(out / "index.html")
+    html = (out / "index.html").read_text("utf-8")
+    assert 'id="claim-ch03.suv-vw.ke"' in html
+    assert 'id="claim-ch08.tower-100-30-10.v3"' not in html
+    assert '<figure id="figure-energy-ellipses">' in html
+    assert '<figure id="figure-tower-100-30-10">' not in html
+
+
 def test_the_three_files_are_written(report_dir: Path) -> None:
     names = {p.name for p in report_dir.iterdir()} - {"screenshot.png"}  # the browser test's
     assert sorted(names) == ["claims.json", "errata.csv", "index.html"]
@@ -173,22 +196,23 @@ def test_a_fresh_run_gives_identical_csv_and_json(
         assert text.encode("utf-8") == (report_dir / name).read_bytes(), name
 
 
-def test_quoted_text_is_escaped(evaluation: Evaluation, catalog: Catalog, book: Book) -> None:
+def test_quoted_text_is_escaped(
+    evaluation: Evaluation, catalog: Catalog, whole_scan: ScanResult
+) -> None:
     hostile = "<script>alert(1)</script>"
     claims = tuple(
         dataclasses.replace(c, quote=hostile, quantity=hostile, verdict="erratum") if i == 0 else c
         for i, c in enumerate(evaluation)
     )
     spoilt = dataclasses.replace(evaluation, claims=claims)
-    keys = tuple(c.key for c in book.identity.chapters)
-    html = render_page(spoilt, scan(book, catalog, keys), catalog, None, figures=[])
+    html = render_page(spoilt, whole_scan, catalog, None, figures=[])
     assert hostile not in html
     assert "&lt;script&gt;alert(1)&lt;/script&gt;" in html
     assert parse(html).scripts == 1  # the page's own small script, nothing else
 
 
 def test_properties_are_shown_when_present(
-    evaluation: Evaluation, catalog: Catalog, book: Book, tmp_path: Path
+    evaluation: Evaluation, catalog: Catalog, whole_scan: ScanResult, tmp_path: Path
 ) -> None:
     results = {
         "date": "2026-11-22T00:00:00Z",
@@ -206,8 +230,7 @@ def test_properties_are_shown_when_present(
     }
     path = tmp_path / "properties.json"
     path.write_text(json.dumps(results), encoding="utf-8")
-    keys = tuple(c.key for c in book.identity.chapters)
-    result = scan(book, catalog, keys)
+    result = whole_scan
     html = render_page(evaluation, result, catalog, path, figures=[])
     assert 'id="properties"' in html
     assert "P is conserved" in html
