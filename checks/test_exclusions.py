@@ -10,9 +10,8 @@ import re
 import pytest
 
 from reference.book import Book
-from reference.catalog import Catalog
 from reference.exclusions import RULES, RULES_BY_NAME, excluded_by, rule_spans
-from reference.scan import scan
+from reference.scan import ScanResult
 from reference.tables import units
 from reference.tokens import tokenize, tokenize_line
 
@@ -152,14 +151,11 @@ def test_guarded_rules_spare_decimals_units_and_values_after_equals(book: Book) 
 
 
 @pytest.mark.integrity
-def test_rules_exclude_fewer_than_half_the_tokens(book: Book, catalog: Catalog) -> None:
-    keys = tuple(c.key for c in book.identity.chapters)
-    result = scan(book, catalog, keys)
-    by_rule = sum(c.excluded_rule for c in result.chapters.values())
-    assert by_rule < len(result.tokens) / 2
+def test_rules_exclude_fewer_than_half_the_tokens(whole_scan: ScanResult) -> None:
+    by_rule = sum(c.excluded_rule for c in whole_scan.chapters.values())
+    assert by_rule < len(whole_scan.tokens) / 2
 
 
 @pytest.mark.integrity
-def test_no_rule_or_hand_exclusion_conflicts_with_the_catalog(book: Book, catalog: Catalog) -> None:
-    keys = tuple(c.key for c in book.identity.chapters)
-    assert scan(book, catalog, keys).conflicts == []
+def test_no_rule_or_hand_exclusion_conflicts_with_the_catalog(whole_scan: ScanResult) -> None:
+    assert whole_scan.conflicts == []
