@@ -92,3 +92,10 @@ def test_mpmath_numbers_pass_through() -> None:
 
 def test_transit_is_half_the_tunnel_period() -> None:
     assert tunnel_transit_time(9.8, 6.4e6) == tunnel_period(9.8, 6.4e6) / 2
+
+
+def test_the_soft_collision_integrator_is_one_of_scipys() -> None:
+    from mechmodel.contact import soft_collision
+
+    with pytest.raises(ValueError, match="method must be one of"):
+        soft_collision([7, 1], [0, 0], [1, 0], 4, method="Euler")
