@@ -125,19 +125,18 @@ def apply(root: Path, mutant: Mutant, source: str) -> None:
     (root / mutant.path).write_text(ast.unparse(ast.fix_missing_locations(tree)) + "\n")
 
 
-def run_tests(root: Path, book: str, timeout: float) -> str:
+def run_tests(root: Path, book: str, timeout: float, module: str | None = None) -> str:
+    """ "killed", "survived" or "timeout": the tests of the copy, with the property module of
+    ``module`` (all property modules when None)."""
     env = {**os.environ, "CI": "true", "BANGCHECK_BOOK": book, "PYTHONDONTWRITEBYTECODE": "1"}
-    command = [
-        sys.executable,
-        "-m",
-        "pytest",
-        "-x",
-        "-q",
-        "-p",
-        "no:cacheprovider",
-        f"--book={book}",
-        *TESTS,
-    ]
+    tests = list(TESTS)
+    properties = root / "checks" / "properties" / f"test_{module}.py"
+    if module is None:
+        tests.append("checks/properties")
+    elif properties.exists():
+        tests.append(str(properties.relative_to(root)))
+    pytest = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
+    command = [*pytest, f"--book={book}", *tests]
     try:
         done = subprocess.run(
             command, cwd=root, env=env, capture_output=True, timeout=timeout, check=False
