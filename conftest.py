@@ -150,6 +150,21 @@ def pytest_terminal_summary(
     return result
 
 
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """The floor on examples: no property may ask for fewer than ``MIN_EXAMPLES``."""
+    del config
+    low = []
+    for item in items:
+        use = getattr(getattr(item, "obj", None), "_hypothesis_internal_use_settings", None)
+        marked = item.get_closest_marker("properties") is not None
+        if marked and use is not None and use.max_examples < MIN_EXAMPLES:
+            low.append(f"{item.nodeid}: max_examples={use.max_examples}")
+    if low:
+        raise pytest.UsageError(
+            f"properties below the floor of {MIN_EXAMPLES} examples:\n" + "\n".join(low)
+        )
+
+
 def pytest_generate_tests(metafunc: pytest.Metafunc) -> None:
     """One test per catalogued claim, its id the claim id."""
     if "claim_id" in metafunc.fixturenames:

@@ -10,7 +10,7 @@ import math
 from fractions import Fraction
 
 import pytest
-from hypothesis import example, given, settings
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from checks.properties.strategies import (
@@ -106,9 +106,7 @@ def test_inelastic_quadratic_roots_keep_momentum_and_energy(
     assert math.isclose(sum(quad.roots) / 2, float(p / (m1 + m2)), rel_tol=1e-9, abs_tol=1e-9)
 
 
-# The integrator costs 0.05-0.2 s per tower: 10 examples keep the suite under its 30 s budget.
-@settings(max_examples=10)
-@given(st.lists(soft_masses(), min_size=2, max_size=4), contact_powers())
+@given(st.lists(soft_masses(), min_size=2, max_size=3), contact_powers())
 def test_zero_gap_tower_keeps_energy_and_stays_under_inf_limit(
     masses: list[float], power: float
 ) -> None:
