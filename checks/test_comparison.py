@@ -218,6 +218,8 @@ def test_model_value_must_be_finite() -> None:
         ("1.81", "3.62", "factor"),
         ("11.37", "3.62", "factor"),
         ("5.03", "3.62", None),
+        ("4", "5", None),  # a small integer's digits do not pin a ratio of 1/sqrt(2) down
+        ("-7.24", "3.62", None),  # a factor with a sign flip is not diagnosed as a factor
     ],
 )
 def test_automatic_diagnosis(printed: str, correct: str, kind: str | None) -> None:

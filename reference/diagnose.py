@@ -29,6 +29,9 @@ _FACTORS: tuple[tuple[str, float], ...] = (
 )
 
 
+_LOOSEST = 0.1  # a printed value less precise than this (relative) says nothing of a factor
+
+
 @dataclass(frozen=True)
 class AutoDiagnosis:
     """The kind found (a design-section-2 diagnosis kind) and a short human reading."""
@@ -80,11 +83,13 @@ def diagnose(printed: Printed, correct: Printed) -> AutoDiagnosis | None:
             return AutoDiagnosis("dropped-digit", f"digits {cd} printed as {pd}")
         if _one_deleted(pd, cd):
             return AutoDiagnosis("extra-digit", f"digits {cd} printed as {pd}")
-    # the simple factor closest to the ratio, if the printed digits allow it
-    tol = _relative_width(printed) + _relative_width(correct) + 1e-12
+    # the simple factor closest to the ratio, if the printed digits pin the ratio down that
+    # closely (a printed 4 for 5 is not a factor of 1/sqrt(2)); a sign flip is not a factor
     r = float(ratio)
-    name, factor = min(_FACTORS, key=lambda f: abs(math.log(abs(r) / f[1])))
-    if abs(math.log(abs(r) / factor)) <= math.log1p(tol):
-        sign = "" if r > 0 else "-"
-        return AutoDiagnosis("factor", f"printed = {sign}{name} x correct")
+    tol = _relative_width(printed) + 1e-12
+    if r <= 0 or tol > _LOOSEST:
+        return None
+    name, factor = min(_FACTORS, key=lambda f: abs(math.log(r / f[1])))
+    if abs(math.log(r / factor)) <= math.log1p(tol):
+        return AutoDiagnosis("factor", f"printed = {name} x correct")
     return None
