@@ -42,6 +42,7 @@ def main() -> None:
     cases = {
         "bangcheck claims --json": ([bangcheck, "claims", "--json"], 2.0),
         "bangcheck scan": ([bangcheck, "scan"], 2.0),
+        "bangcheck report": ([bangcheck, "report", "--out", "/tmp/bangcheck-budget-report"], 15.0),
     }
     if not args.skip_pytest:
         cases["pytest (ci profile, serial)"] = (
