@@ -1321,16 +1321,6 @@ def plot_field(f: Callable[[complex], complex], z: complex) -> tuple[float, floa
     return w.real, w.imag
 
 
-def view_value(view: PolyView, x: Any, y: Any) -> Any:
-    """The value at (x, y) of a polynomial in x, y given as a ``PolyView`` (for plotting the
-    fields and potentials of Fig. 10.17); works on floats and numpy arrays."""
-    total: Any = 0.0
-    for name, c in view.coefficients.items():
-        i, j = name[1:].split("y")
-        total = total + float(c) * x ** int(i) * y ** int(j)
-    return total
-
-
 def potential_parts(phi: Callable[[complex], complex], z: complex) -> tuple[float, float]:
     """(Phi, A) = (Re phi, Im phi) at z."""
     w = phi(z)

@@ -370,19 +370,6 @@ def root_mass_powers() -> RootMassPowers:
     return RootMassPowers(momentum=to_momentum, velocity=to_velocity)
 
 
-def root_mass_power_of(mass: Any, target: Any) -> int:
-    """The integer k with R^k = target for the root mass R = sqrt(mass): searched among
-    -4..4 in exact arithmetic ((12.9) for one diagonal entry: m = R^2, 1/m = R^-2)."""
-    m = Fraction(inputs.mass(mass))
-    root = _exact_sqrt(m)
-    if not isinstance(root, Fraction) or root == 1:
-        raise ValueError("mass must be a perfect-square rational other than 1")
-    found = [k for k in range(-4, 5) if root**k == Fraction(target)]
-    if not found:
-        raise ValueError(f"{target!r} is no power of sqrt({mass!r}) from -4 to 4")
-    return found[0]
-
-
 @dataclass(frozen=True)
 class EllipseSlopes:
     """Slopes (rise over run) of the lines of Fig. 12.1 in the three planes: the collision

@@ -56,12 +56,6 @@ class Identity:
                 return chapter
         raise KeyError(key)
 
-    def chapter_of_line(self, line: int) -> Chapter:
-        for chapter in self.chapters:
-            if line in chapter:
-                return chapter
-        raise KeyError(line)
-
 
 @cache
 def identity() -> Identity:

@@ -1,8 +1,9 @@
 """Reading the catalog: ``reference/claims/chNN.toml`` and ``chA1.toml``, one file per chapter.
 
-``read_catalog`` parses every file and checks each entry against the schema; it does not need
-the book. ``reference.validate`` then checks the entries against each other, the model and the
-text. Both report every problem found, one line each (file, claim id, field), in a
+``read_catalog`` parses every file and checks each entry against the schema (it does not need
+the book), keeping the entries that pass with a list of the problems of those that do not.
+``reference.validate`` then checks the entries against each other, the model and the text, and
+``checked_catalog`` raises every problem found, one line each (file, claim id, field), in a
 ``CatalogError``.
 """
 
@@ -19,7 +20,7 @@ from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
-from reference.schema import CatalogError, Claim, Excluded, Meta, Problem, Slip
+from reference.schema import Claim, Excluded, Meta, Problem, Slip
 
 CLAIMS_PACKAGE_DIR = "claims"
 
@@ -145,7 +146,7 @@ def read_file(
     return ChapterFile(name, stem, meta, claims, excluded, slips)
 
 
-def read_catalog_partly(
+def read_catalog(
     directory: Traversable | Path | None = None,
 ) -> tuple[Catalog, list[Problem]]:
     """Parse every ``ch*.toml`` of ``directory`` (default: the packaged catalog), keeping the
@@ -159,11 +160,3 @@ def read_catalog_partly(
     rejected: set[str] = set()
     chapter_files = [f for p in paths if (f := read_file(p, problems, rejected)) is not None]
     return Catalog(tuple(chapter_files), frozenset(rejected)), problems
-
-
-def read_catalog(directory: Traversable | Path | None = None) -> Catalog:
-    """Parse the catalog; ``CatalogError`` with every schema problem found."""
-    catalog, problems = read_catalog_partly(directory)
-    if problems:
-        raise CatalogError(problems)
-    return catalog

@@ -8,8 +8,10 @@ to right, which is what ``occurrence`` counts. Minus signs and en dashes match `
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 
-from reference.tokens import Token, normalize
+from reference.book import Book
+from reference.tokens import Token, normalize, tokenize_line
 
 
 @dataclass(frozen=True)
@@ -54,3 +56,16 @@ def pick_occurrence(found: list[Match], occurrence: int | None) -> tuple[Match |
     if occurrence > len(found):
         return None, f"occurrence {occurrence} asked, but it occurs {len(found)} time(s)"
     return found[occurrence - 1], ""
+
+
+@cache
+def line_tokens(book: Book, number: int) -> list[Token]:
+    """The tokens of line ``number`` of ``book``, tokenized once per run (do not modify)."""
+    return tokenize_line(book.line(number), number)
+
+
+def find(book: Book, number: int, printed: str, occurrence: int | None) -> tuple[Match | None, str]:
+    """Where ``printed`` stands on line ``number`` at ``occurrence``, or None and why not."""
+    return pick_occurrence(
+        matches(book.line(number), line_tokens(book, number), printed), occurrence
+    )

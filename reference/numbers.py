@@ -184,10 +184,3 @@ def significant_digits(text: str) -> str:
     """The digits of a printed decimal without sign, separators, point or leading zeros."""
     digits = "".join(c for c in normalize(text) if c.isdigit())
     return digits.lstrip("0") or "0"
-
-
-def decimals_of(text: str) -> int:
-    """Number of digits after the point in a printed decimal (0 if none)."""
-    s = normalize(text).strip().rstrip("%°")
-    mantissa = re.split(r"[Ee·⋅]", s)[0]
-    return len(mantissa.split(".")[1]) if "." in mantissa else 0

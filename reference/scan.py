@@ -15,9 +15,9 @@ from typing import Literal
 
 from reference.book import Book
 from reference.catalog import Catalog
-from reference.exclusions import RULES, excluded_by, rule_spans
-from reference.locate import matches, pick_occurrence
-from reference.tokens import Token, normalize, tokenize_line
+from reference.exclusions import excluded_by, rule_spans
+from reference.locate import find, line_tokens
+from reference.tokens import Token, normalize
 
 Status = Literal["catalogued", "excluded", "missing"]
 
@@ -96,9 +96,7 @@ def _claimed(book: Book, catalog: Catalog, conflicts: list[str]) -> dict[tuple[i
             conflicts.append(f"line {tok.line} token {tok.text!r}: claimed by {other} and {ident}")
 
     for _, claim in catalog.claims():
-        text = book.line(claim.line)
-        tokens = tokenize_line(text, claim.line)
-        match, _ = pick_occurrence(matches(text, tokens, claim.printed), claim.occurrence)
+        match, _ = find(book, claim.line, claim.printed, claim.occurrence)
         if match is None:
             continue  # the validator reports it
         for tok in match.tokens:
@@ -107,7 +105,7 @@ def _claimed(book: Book, catalog: Catalog, conflicts: list[str]) -> dict[tuple[i
             spelled = f"{claim.printed} {claim.means or ''}"
             parts = {p for p in re.split(r"[/\s·⋅]+", normalize(spelled)) if p}
             for number in range(claim.line + 1, claim.line_end + 1):
-                for tok in tokenize_line(book.line(number), number):
+                for tok in line_tokens(book, number):
                     if tok.norm in parts:
                         mark(tok, claim.id)
     return out
@@ -123,9 +121,7 @@ def _hand(book: Book, catalog: Catalog) -> tuple[dict[tuple[int, int], str], dic
                 for number in range(e.lines[0], e.lines[1] + 1):
                     lines[number] = e.reason
             elif e.line is not None and e.token is not None:
-                text = book.line(e.line)
-                found = matches(text, tokenize_line(text, e.line), e.token)
-                match, _ = pick_occurrence(found, e.occurrence)
+                match, _ = find(book, e.line, e.token, e.occurrence)
                 if match is not None:
                     for tok in match.tokens:
                         tokens[(tok.line, tok.start)] = e.reason
@@ -141,11 +137,11 @@ def scan(book: Book, catalog: Catalog, chapters: tuple[str, ...]) -> ScanResult:
         chapter = book.identity.chapter(key)
         counts = result.chapters.setdefault(key, ChapterCounts(key))
         for number in range(chapter.start, chapter.end + 1):
-            line_tokens = tokenize_line(book.line(number), number)
-            if not line_tokens:
+            tokens = line_tokens(book, number)
+            if not tokens:
                 continue
             spans = rule_spans(book.lines, number)
-            for tok in line_tokens:
+            for tok in tokens:
                 counts.tokens += 1
                 scanned = _classify(key, tok, spans, claimed, hand_tokens, hand_lines, result)
                 result.tokens.append(scanned)
@@ -195,6 +191,3 @@ def _classify(
             chapter, tok.line, tok.start, tok.end, tok.text, "excluded", reason, hand=True
         )
     return ScannedToken(chapter, tok.line, tok.start, tok.end, tok.text, "missing", None)
-
-
-RULE_NAMES = tuple(rule.name for rule in RULES)

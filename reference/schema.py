@@ -14,8 +14,6 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field, StringConstraints
 from typing_extensions import TypeAliasType
 
-SCHEMA_VERSION = 1
-
 Kind = Literal["derived", "given", "constant", "identity", "count"]
 Expect = Literal["verified", "rounding", "erratum", "given"]
 Relation = Literal["=", "~", "<", ">", "<=", ">=", "between", "order"]

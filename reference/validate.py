@@ -10,29 +10,22 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 from fractions import Fraction
-from functools import cache
 from importlib.resources.abc import Traversable
 from pathlib import Path
 
 from reference.book import Book, identity
-from reference.catalog import Catalog, ChapterFile, read_catalog_partly
-from reference.locate import matches, pick_occurrence
+from reference.catalog import Catalog, ChapterFile, read_catalog
+from reference.locate import find, line_tokens, matches, pick_occurrence
 from reference.models import check_signature, pick_steps, resolve
 from reference.numbers import NumberFormatError, Printed, parse_number, significant_digits
 from reference.schema import HAND_REASONS, CatalogError, Claim, ClaimRef, Excluded, Problem
 from reference.tables import NO_CONVERSION, constants, units
-from reference.tokens import Token, normalize, tokenize_line
+from reference.tokens import normalize
 
 HEDGES = (
     "about", "~", "nearly", "some", "roughly", "approximately", "almost", "around", "≈",
     "order", "over", "under", "less than", "more than", "or so", "estimate",
 )  # fmt: skip
-
-
-@cache
-def line_tokens(book: Book, number: int) -> list[Token]:
-    """The tokens of line ``number`` of ``book`` (cached per line)."""
-    return tokenize_line(book.line(number), number)
 
 
 def occurrences(text: str, quote: str) -> int:
@@ -326,8 +319,7 @@ class _Checker:
             add("line", f"{e.line} is outside the chapter's lines [{lo}, {hi}]")
             return
         if self.book is not None:
-            found = matches(self.book.line(e.line), line_tokens(self.book, e.line), e.token)
-            match, why = pick_occurrence(found, e.occurrence)
+            match, why = find(self.book, e.line, e.token, e.occurrence)
             if match is None:
                 add("token", f"{e.token!r} {why}")
 
@@ -424,7 +416,7 @@ def validate(catalog: Catalog, book: Book | None) -> list[Problem]:
 def checked_catalog(book: Book | None, directory: Traversable | Path | None = None) -> Catalog:
     """Read and validate the catalog; ``CatalogError`` with one line per problem, the schema's
     and the rules' together."""
-    catalog, problems = read_catalog_partly(directory)
+    catalog, problems = read_catalog(directory)
     problems = problems + validate(catalog, book)
     if problems:
         raise CatalogError(problems)

@@ -20,9 +20,8 @@ from reference.book import Book
 from reference.catalog import Catalog
 from reference.compare import VERDICTS
 from reference.evaluation import EvaluatedClaim, Evaluation
-from reference.locate import matches, pick_occurrence
+from reference.locate import find
 from reference.scan import ScanResult
-from reference.tokens import tokenize_line
 from reports.figures import RenderedFigure, render_all, verdict_chart
 from reports.output import claims_json, errata_csv
 
@@ -52,8 +51,7 @@ def quote_parts(book: Book, claim: EvaluatedClaim) -> Quote:
     start = text.find(claim.quote)
     if start < 0:
         return Quote(claim.quote, "", "")
-    found = matches(text, tokenize_line(text, claim.line), claim.printed)
-    match, _ = pick_occurrence(found, claim.occurrence)
+    match, _ = find(book, claim.line, claim.printed, claim.occurrence)
     if match is None or not start <= match.start <= match.end <= start + len(claim.quote):
         return Quote(claim.quote, "", "")
     a, b = match.start - start, match.end - start

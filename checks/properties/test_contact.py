@@ -149,3 +149,16 @@ def test_zero_gap_tower_ignores_force_constant_and_drop_speed(
     assert base.energy_error <= ENERGY
     for a, b in zip(base.velocities, other.velocities, strict=True):
         assert abs(b.value / 3.0 - a.value) <= a.error + b.error / 3.0
+
+
+@given(positive_quantities(), gaps(), st.floats(min_value=0.01, max_value=0.5))
+def test_balloon_stiffness_is_the_slope_of_the_balloon_force(
+    pressure: float, radius: float, fraction: float
+) -> None:
+    """The balloon force P pi r^2 of a flat of radius r (7.2) grows with the depth at the rate the
+    stiffness gives."""
+    depth = fraction * radius
+    h = depth * 1e-6
+    force = contact.balloon_force
+    slope = (force(pressure, radius, depth + h) - force(pressure, radius, depth - h)) / (2 * h)
+    assert math.isclose(slope, contact.balloon_stiffness(pressure, radius, depth), rel_tol=1e-5)

@@ -12,6 +12,7 @@ from fractions import Fraction
 
 import pytest
 from hypothesis import assume, example, given, target
+from hypothesis import strategies as st
 
 from checks.properties.strategies import (
     chord_offsets,
@@ -335,3 +336,36 @@ def test_chord_is_never_longer_than_the_diameter(radius: float, u: float) -> Non
     assert fields.chord_length(radius, angle) <= 2 * radius * (1 + REL)
     assert close(fields.chord_length(radius, math.pi), 2 * radius, radius)
     assert close(fields.chord_length(radius, math.pi / 2), radius * math.sqrt(2), radius, 4 * REL)
+
+
+@given(
+    surface_gravities(), planet_radii(), radial_fractions(), st.floats(min_value=0.1, max_value=10)
+)
+def test_potential_energy_is_mass_times_potential_and_its_slope_the_force(
+    g: float, radius: float, fraction: float, mass: float
+) -> None:
+    """U = m Phi, and the field is minus the slope of the potential, -dPhi/dr = F/m, inside and
+    outside a uniform Earth (Fig. 9.7)."""
+    r = 2 * radius * fraction + radius / 100
+    energy = fields.potential_energy(mass, g, radius, r)
+    assert math.isclose(energy, mass * fields.gravity_potential(g, radius, r), rel_tol=1e-12)
+    h = r * 1e-6
+    phi = fields.gravity_potential
+    slope = (phi(g, radius, r + h) - phi(g, radius, r - h)) / (2 * h)
+    # the central difference cancels digits of a potential far larger than its slope near r = 0
+    cancellation = 1e-9 * abs(phi(g, radius, r)) / h
+    field = fields.gravity_field(g, radius, r)
+    assert math.isclose(-slope, field, rel_tol=1e-6, abs_tol=cancellation)
+
+
+@given(st.floats(min_value=0.1, max_value=10), st.floats(min_value=0.1, max_value=10))
+def test_coulomb_force_is_minus_the_slope_of_coulomb_energy(q: float, r: float) -> None:
+    """F = k q1 q2 / r^2 is -dU/dr of U = k q1 q2 / r (9.1)-(9.2a): halving r quadruples F."""
+    k = 1.0
+    h = r * 1e-6
+    slope = (fields.coulomb_energy(k, q, q, r + h) - fields.coulomb_energy(k, q, q, r - h)) / (
+        2 * h
+    )
+    force = fields.coulomb_force(k, q, q, r)
+    assert math.isclose(-slope, force, rel_tol=1e-6)
+    assert math.isclose(fields.coulomb_force(k, q, q, r / 2), 4 * force, rel_tol=1e-12)

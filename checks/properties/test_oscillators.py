@@ -12,6 +12,7 @@ from fractions import Fraction
 
 import pytest
 from hypothesis import example, given, target
+from hypothesis import strategies as st
 
 from checks.properties.strategies import (
     derivative_orders,
@@ -305,3 +306,18 @@ def test_triad_radius_and_perpendicular_are_dual(
     assert close(osc.dot(v.p, v.r), 1.0, 1.0, TRIG)
     phi_next = osc.triad_angle(a, b, phi0, k + 1)
     assert close(math.atan2(v.p[1], v.p[0]), phi_next, 1.0, TRIG)
+
+
+@given(
+    st.floats(min_value=0.1, max_value=1e4),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=1e-3, max_value=1),
+)
+def test_tidal_force_is_the_centrifugal_force_at_the_orbit_frequency(
+    frequency: float, mass: float, offset: float
+) -> None:
+    """The tidal force on a mass off the centre of gravity is m (2 pi f)^2 x (11.3a), linear in
+    the offset."""
+    force = osc.tidal_force(frequency, mass, offset)
+    assert math.isclose(force, mass * (2 * math.pi * frequency) ** 2 * offset, rel_tol=1e-12)
+    assert math.isclose(osc.tidal_force(frequency, mass, 2 * offset), 2 * force, rel_tol=1e-12)

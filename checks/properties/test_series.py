@@ -259,3 +259,14 @@ def test_complex_products_rotate_and_sums_obey_the_cosine_laws(
         law = series.cosine_law(r, a, 1.7, b)
         assert math.isclose(law.sum_coefficient, 2, rel_tol=1e-9)
         assert math.isclose(law.difference_coefficient, 2, rel_tol=1e-9)
+
+
+@given(st.floats(min_value=-3, max_value=3), st.sampled_from([1e-2, 1e-4, 1e-6, 1e-9]))
+def test_the_minimum_order_is_the_first_within_the_tolerance(x: float, tolerance: float) -> None:
+    """exp_min_order gives the least order o whose partial sum (10.5b) is within the tolerance of
+    e^x: that order is, and the one before is not."""
+    order = series.exp_min_order(x, tolerance)
+    target = math.exp(x)
+    assert abs(series.exp_partial_sum(x, order) - target) <= tolerance * (1 + 1e-9) + 1e-15
+    if order:
+        assert abs(series.exp_partial_sum(x, order - 1) - target) > tolerance * (1 - 1e-9)

@@ -80,12 +80,6 @@ def figure(key: str, book_figure: str, caption: str, claims: tuple[str, ...]) ->
     return register
 
 
-def _value(claims: dict[str, EvaluatedClaim], ident: str) -> float:
-    value = claims[ident].value
-    assert value is not None, ident
-    return value
-
-
 _SVG_ID = re.compile(r'id="([^"]+)"')
 _METADATA = re.compile(r"<metadata>.*?</metadata>\s*", re.S)
 
