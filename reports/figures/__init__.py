@@ -81,6 +81,7 @@ def figure(key: str, book_figure: str, caption: str, claims: tuple[str, ...]) ->
 
 
 _SVG_ID = re.compile(r'id="([^"]+)"')
+_SVG_REF = re.compile(r'(id="|url\(#|"#)([^")]+)(?=[")])')
 _METADATA = re.compile(r"<metadata>.*?</metadata>\s*", re.S)
 
 
@@ -90,15 +91,18 @@ def _svg(fig: Figure, key: str) -> str:
 
     buffer = io.StringIO()
     with matplotlib.rc_context({"svg.hashsalt": f"bangcheck-{key}", "svg.fonttype": "none"}):
-        fig.savefig(buffer, format="svg", metadata={"Date": None}, bbox_inches="tight")
+        fig.savefig(buffer, format="svg", metadata={"Date": None}, bbox_inches="tight", dpi=200)
     text = buffer.getvalue()
     text = _METADATA.sub("", text[text.index("<svg") :])
-    # matplotlib names its elements axes_1, line2d_1, ... in every figure: make them unique
-    for ident in set(_SVG_ID.findall(text)):
-        new = f"{key}-{ident}"
-        text = text.replace(f'id="{ident}"', f'id="{new}"')
-        text = text.replace(f"#{ident})", f"#{new})").replace(f'"#{ident}"', f'"#{new}"')
-    return text
+    # matplotlib names its elements axes_1, line2d_1, ... in every figure: make them unique,
+    # in one pass over the text (ids and the url(#id) and href="#id" references to them)
+    ids = set(_SVG_ID.findall(text))
+
+    def prefixed(match: re.Match[str]) -> str:
+        lead, name = match.groups()
+        return f"{lead}{key}-{name}" if name in ids else match.group(0)
+
+    return _SVG_REF.sub(prefixed, text)
 
 
 def registered() -> list[FigureSpec]:
