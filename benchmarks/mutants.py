@@ -1,13 +1,15 @@
 """Mutation run: does the test suite notice when mechmodel is wrong?
 
-Copies the project into a temporary directory, changes one small thing in one mechmodel module at
-a time (swap + and -, * and /, flip a comparison, flip a sign, nudge a constant, drop a factor 2,
-swap two returned values), and runs the tests that exercise mechmodel (the claim tests, the
-property suite, the input and sensitivity tests) against the copy with a per-mutant timeout. A
-mutant is killed when the tests fail. Before the sample it checks that the unmutated copy passes
-and that a mutant that must be killed is killed (so the tests really import the copy).
+Copies the project into a temporary directory (one copy per job), changes one small thing in one
+mechmodel module at a time (swap + and -, * and /, flip a comparison, flip a sign, nudge a
+constant, drop a factor 2, swap two returned values), and runs the tests that exercise mechmodel
+(the claim tests, the property suite, the input and sensitivity tests) against the copy with a
+per-mutant timeout. A mutant is killed when the tests fail. Before the sample it checks that the
+unmutated copy passes and that a mutant that must be killed is killed (so the tests really import
+the copy). ``--only`` retries chosen mutants of the sample, as the run prints them.
 
-    python benchmarks/mutants.py [--count 150] [--seed 0] [--timeout 120] [--book PATH]
+    python benchmarks/mutants.py [--count 150] [--seed 0] [--timeout 120] [--jobs 2]
+                                 [--only 'mechmodel/x.py:12 swap Add'] [--book PATH]
 
 Not part of the default test run.
 """
@@ -17,6 +19,7 @@ from __future__ import annotations
 import argparse
 import ast
 import os
+import queue
 import random
 import shutil
 import subprocess
@@ -24,6 +27,7 @@ import sys
 import tempfile
 import time
 from collections.abc import Iterator
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -146,55 +150,90 @@ def run_tests(root: Path, book: str, timeout: float, module: str | None = None) 
     return "survived" if done.returncode == 0 else "killed"
 
 
+def copy_tree(root: Path) -> None:
+    """The project's tree, without caches or report output, into ``root``."""
+    for name in TREE:
+        source = ROOT / name
+        if source.is_dir():
+            shutil.copytree(
+                source, root / name, ignore=shutil.ignore_patterns("__pycache__", "out")
+            )
+        else:
+            shutil.copy2(source, root / name)
+
+
+def try_mutant(root: Path, mutant: Mutant, book: str, timeout: float) -> str:
+    """Apply ``mutant`` in the copy at ``root``, run its tests, undo it; the outcome."""
+    path = root / mutant.path
+    original = path.read_text(encoding="utf-8")
+    apply(root, mutant, original)
+    try:
+        return run_tests(root, book, timeout, Path(mutant.path).stem)
+    finally:
+        path.write_text(original, encoding="utf-8")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--count", type=int, default=150)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--timeout", type=float, default=120)
+    parser.add_argument("--jobs", type=int, default=1, help="mutants tried at once (one copy each)")
+    parser.add_argument(
+        "--only",
+        action="append",
+        default=[],
+        help='try just this mutant of the sample, as printed: "mechmodel/x.py:12 swap Add"',
+    )
     parser.add_argument("--book", default=os.environ.get("BANGCHECK_BOOK"))
     args = parser.parse_args()
     if not args.book:
         sys.exit("give --book PATH or set BANGCHECK_BOOK")
     book = str(Path(args.book).resolve())
     with tempfile.TemporaryDirectory(prefix="bangcheck-mutants-") as tmp:
-        root = Path(tmp)
-        for name in TREE:
-            source = ROOT / name
-            if source.is_dir():
-                shutil.copytree(
-                    source, root / name, ignore=shutil.ignore_patterns("__pycache__", "out")
-                )
-            else:
-                shutil.copy2(source, root / name)
+        roots = [Path(tmp) / f"copy{k}" for k in range(max(args.jobs, 1))]
+        for root in roots:
+            copy_tree(root)
+        root = roots[0]
         if run_tests(root, book, args.timeout) != "survived":
             sys.exit("the unmutated copy fails its tests: fix that first")
         sanity = Mutant("mechmodel/collisions.py", 0, "swap Add", 0)
-        original = (root / sanity.path).read_text(encoding="utf-8")
-        apply(root, sanity, original)
-        outcome = run_tests(root, book, args.timeout, "collisions")
-        (root / sanity.path).write_text(original, encoding="utf-8")
-        if outcome != "killed":
+        if try_mutant(root, sanity, book, args.timeout) != "killed":
             sys.exit("the sanity mutant survived: are the tests importing the copy?")
         mutants = enumerate_mutants(root)
         sample = random.Random(args.seed).sample(mutants, min(args.count, len(mutants)))
+        if args.only:
+            sample = [m for m in sample if str(m) in args.only]
+            unknown = set(args.only) - {str(m) for m in sample}
+            if unknown:
+                sys.exit(f"not in the sample: {sorted(unknown)}")
         print(f"{len(mutants)} mutation sites; sample of {len(sample)} (seed {args.seed})")
+        free: queue.Queue[Path] = queue.Queue()
+        for copy in roots:
+            free.put(copy)
+
+        def attempt(mutant: Mutant) -> str:
+            copy = free.get()
+            try:
+                return try_mutant(copy, mutant, book, args.timeout)
+            finally:
+                free.put(copy)
+
         tally: dict[str, int] = {}
         survivors = []
         start = time.perf_counter()
-        for i, mutant in enumerate(sample, start=1):
-            path = root / mutant.path
-            original = path.read_text(encoding="utf-8")
-            apply(root, mutant, original)
-            outcome = run_tests(root, book, args.timeout, Path(mutant.path).stem)
-            path.write_text(original, encoding="utf-8")
-            tally[outcome] = tally.get(outcome, 0) + 1
-            if outcome == "survived":
-                survivors.append(mutant)
-            print(f"[{i}/{len(sample)}] {outcome:<8} {mutant}", file=sys.stderr)
+        with ThreadPoolExecutor(max_workers=len(roots)) as pool:
+            for i, (mutant, outcome) in enumerate(
+                zip(sample, pool.map(attempt, sample), strict=True), start=1
+            ):
+                tally[outcome] = tally.get(outcome, 0) + 1
+                if outcome == "survived":
+                    survivors.append(mutant)
+                print(f"[{i}/{len(sample)}] {outcome:<8} {mutant}", file=sys.stderr)
         killed = tally.get("killed", 0) + tally.get("timeout", 0)
         print(
             f"killed {killed} of {len(sample)} ({100 * killed / len(sample):.1f}%): "
-            f"{tally}; {time.perf_counter() - start:.0f} s"
+            f"{tally}; {time.perf_counter() - start:.0f} s with {len(roots)} job(s)"
         )
         for mutant in survivors:
             print(f"survived: {mutant}")

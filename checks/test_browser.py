@@ -15,7 +15,8 @@ import pytest
 
 from reference.evaluation import Evaluation
 
-pytestmark = pytest.mark.browser
+# under xdist (--dist loadgroup) one worker builds the session's report for all its tests
+pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("report")]
 
 CHROMIUM = "/usr/bin/chromium"
 FLAGS = [

@@ -25,7 +25,8 @@ from reports.figures import registered
 from reports.output import ERRATA_COLUMNS, claims_json, errata_csv, write_atomically
 from reports.page import errata_rows, render_page, report_meta
 
-pytestmark = pytest.mark.report
+# under xdist (--dist loadgroup) one worker builds the session's report for all its tests
+pytestmark = [pytest.mark.report, pytest.mark.xdist_group("report")]
 
 VOID = {
     "meta",

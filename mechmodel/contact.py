@@ -357,6 +357,14 @@ def _integrate(
     speed = max(float(np.max(np.abs(r0))), 1e-300)
     reach = ((power + 1) * float(m.min()) * speed * speed / (2 * strength)) ** (1 / (power + 1))
     scale = reach / speed
+    # the shortest contact possible: no pair closes faster than twice the top speed the energy
+    # allows, 2 sqrt(2 E / m_min), and its reduced mass is at least m_min / 2; such a pair stays
+    # in touch for at least 2 y_max / r. Steps are capped at a quarter of that, so no contact
+    # can open and close between two steps unseen.
+    e0 = energy(x, v, active)
+    fastest = 2 * math.sqrt(2 * e0 / float(m.min())) if e0 > 0 else speed
+    deepest = ((power + 1) * float(m.min()) * fastest**2 / (4 * strength)) ** (1 / (power + 1))
+    step_cap = 2 * deepest / fastest / 4
 
     mass = [float(mk) for mk in m]
     on = active  # the contacts in force during the current piece (updated between pieces)
@@ -385,7 +393,6 @@ def _integrate(
 
     atol = rtol * 1e-3 * max(reach, speed)
     t, state = 0.0, np.concatenate((x, v))
-    e0 = energy(x, v, active)
     times, path = [0.0], [list(x)]
     touches = 0
     for _ in range(_MAX_SEGMENTS):
@@ -414,7 +421,7 @@ def _integrate(
             rtol=rtol,
             atol=atol,
             events=events,
-            max_step=scale / 20,
+            max_step=step_cap,
             first_step=scale * 1e-3,
             method=method,
         )

@@ -12,7 +12,7 @@ from __future__ import annotations
 import tomllib
 from collections.abc import Iterator
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, lru_cache
 from importlib.resources import files
 from importlib.resources.abc import Traversable
 from pathlib import Path
@@ -118,17 +118,31 @@ def _entries(
     return tuple(out)
 
 
-def read_file(
-    path: Traversable | Path, problems: list[Problem], rejected: set[str]
-) -> ChapterFile | None:
-    """Parse one catalog file, adding its schema problems to ``problems`` and the ids of the
-    entries that failed to ``rejected``."""
-    name = display_name(path)
+@dataclass(frozen=True)
+class ParsedFile:
+    """What one catalog file's text gives: the file (None when it cannot be read at all), its
+    schema problems and the ids of the entries that failed."""
+
+    chapter_file: ChapterFile | None
+    problems: tuple[Problem, ...]
+    rejected: frozenset[str]
+
+
+@lru_cache(maxsize=64)
+def parse_file(name: str, text: str) -> ParsedFile:
+    """Parse one catalog file's text and check each entry against the schema.
+
+    Cached on the text itself, so a run that reads the catalog many times (the tests, each
+    command they call) parses and builds each unchanged file once; an edited file is parsed
+    anew. The result is immutable.
+    """
+    problems: list[Problem] = []
+    rejected: set[str] = set()
     try:
-        raw = tomllib.loads(path.read_text(encoding="utf-8"))
+        raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as err:
         problems.append(Problem(name, "-", "-", f"not valid TOML: {err}"))
-        return None
+        return ParsedFile(None, tuple(problems), frozenset())
     unknown = set(raw) - {"meta", "claim", "excluded", "slip"}
     for table in sorted(unknown):
         problems.append(
@@ -138,12 +152,13 @@ def read_file(
         meta = Meta.model_validate(raw.get("meta"))
     except ValidationError as err:
         problems.extend(_entry_problems(name, "meta", err))
-        return None
+        return ParsedFile(None, tuple(problems), frozenset())
     claims = _entries(name, raw, "claim", Claim, problems, rejected)
     excluded = _entries(name, raw, "excluded", Excluded, problems, rejected)
     slips = _entries(name, raw, "slip", Slip, problems, rejected)
     stem = name.rsplit("/", 1)[-1].removesuffix(".toml")
-    return ChapterFile(name, stem, meta, claims, excluded, slips)
+    chapter_file = ChapterFile(name, stem, meta, claims, excluded, slips)
+    return ParsedFile(chapter_file, tuple(problems), frozenset(rejected))
 
 
 def read_catalog(
@@ -156,7 +171,8 @@ def read_catalog(
         (p for p in root.iterdir() if p.name.startswith("ch") and p.name.endswith(".toml")),
         key=lambda p: p.name,
     )
-    problems: list[Problem] = []
-    rejected: set[str] = set()
-    chapter_files = [f for p in paths if (f := read_file(p, problems, rejected)) is not None]
-    return Catalog(tuple(chapter_files), frozenset(rejected)), problems
+    parsed = [parse_file(display_name(p), p.read_text(encoding="utf-8")) for p in paths]
+    problems = [problem for f in parsed for problem in f.problems]
+    rejected = frozenset().union(*(f.rejected for f in parsed))
+    chapter_files = tuple(f.chapter_file for f in parsed if f.chapter_file is not None)
+    return Catalog(chapter_files, rejected), problems

@@ -371,6 +371,9 @@ def contact_powers() -> st.SearchStrategy[float]:
     return st.floats(min_value=1, max_value=4)
 
 
+SOFT_ENERGY_DRIFT = 1e-10  # the soft-contact integrator's energy drift over a collision, relative
+
+
 def soft_masses() -> st.SearchStrategy[float]:
     """A ball's mass for the soft-collision integrator, 0.1 to 10 (mass ratios up to 100)."""
     return st.floats(min_value=-1, max_value=1).map(lambda k: 10.0**k)

@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 from checks.properties.strategies import (
     drop_speeds,
     exact_histories,
+    fraction_masses,
     fraction_velocities,
     masses,
     moderate_fraction_masses,
@@ -24,6 +25,7 @@ from mechmodel.bangs import (
     BALLS,
     CEILING,
     FLOOR,
+    bang_changes,
     bang_count,
     bang_history,
     bang_possible,
@@ -226,3 +228,13 @@ def test_a_mass_ratio_of_100_to_the_k_counts_the_digits_of_pi(k: int) -> None:
     about 2 / 10^k and the double bangs turn through pi in all."""
     digits = int(str(math.pi).replace(".", "")[: k + 1])
     assert bang_count(100**k, 1, 1, 0).total == digits == ceiling_sequence(100**k, 1, 1, 0).count
+
+
+@given(fraction_masses(), fraction_masses(), fraction_velocities(), fraction_velocities())
+def test_an_elastic_bang_changes_neither_momentum_nor_energy(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """The independent collision model's two equations (Fig. 4.4): a ball bang leaves
+    Delta P = 0 and Delta KE = 0, exactly for exact inputs."""
+    changes = bang_changes(m1, m2, v1, v2)
+    assert (changes.momentum_change, changes.energy_change) == (0, 0)

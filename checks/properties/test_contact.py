@@ -17,6 +17,7 @@ from hypothesis import example, given, target
 from hypothesis import strategies as st
 
 from checks.properties.strategies import (
+    SOFT_ENERGY_DRIFT,
     closing_speeds,
     contact_powers,
     fraction_quantities,
@@ -29,7 +30,6 @@ from mechmodel.collisions import collide
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
-ENERGY = 1e-9  # the integrator's energy drift over a whole collision, relative
 
 
 # --- the dent (7.1)-(7.4) -----------------------------------------------------------------------
@@ -117,7 +117,7 @@ def test_soft_collision_conserves_energy_and_momentum(
     v1, v2 = (e.value for e in run.velocities)
     p_in, p_out = m1 * speed, m1 * v1 + m2 * v2
     target(run.energy_error, label="relative energy error")
-    assert run.energy_error <= ENERGY
+    assert run.energy_error <= SOFT_ENERGY_DRIFT
     assert abs(p_out - p_in) <= 1e-12 * (abs(m1 * v1) + abs(m2 * v2) + p_in)
 
 
@@ -134,21 +134,6 @@ def test_separated_balls_follow_the_elastic_collision_map(
     for got, error in zip(run.velocities, errors, strict=True):
         assert error <= got.error
         assert got.error <= 1e-7 * speed
-
-
-@given(st.lists(soft_masses(), min_size=2, max_size=3), contact_powers())
-def test_zero_gap_tower_ignores_force_constant_and_drop_speed(
-    masses: list[float], power: float
-) -> None:
-    """A zero-gap tower with one power law for every contact gives final velocities
-    proportional to the drop speed and independent of the force constant (scaling)."""
-    from mechmodel.towers import zero_gap_tower
-
-    base = zero_gap_tower(masses, power, 1.0, 1.0)
-    other = zero_gap_tower(masses, power, 3.0, 0.2)
-    assert base.energy_error <= ENERGY
-    for a, b in zip(base.velocities, other.velocities, strict=True):
-        assert abs(b.value / 3.0 - a.value) <= a.error + b.error / 3.0
 
 
 @given(positive_quantities(), gaps(), st.floats(min_value=0.01, max_value=0.5))

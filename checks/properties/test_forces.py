@@ -92,6 +92,15 @@ def test_power_law_potential_slope_is_the_force(k: float, p: float, y: float) ->
     assert abs(pot.exponent_gain - 1) <= POWER * (1 + abs(p))
 
 
+@given(positive_quantities(), gaps())
+def test_the_logarithmic_potential_gives_the_inverse_force(k: float, y: float) -> None:
+    """For p = -1 the potential is U = -k ln y (like the isothermal (6.11)), and -dU/dy is the
+    force k / y."""
+    pot = forces.power_law_potential(k, -1, y)
+    assert pot.logarithmic
+    assert math.isclose(pot.force, k / y, rel_tol=8 * REL)
+
+
 @given(st.integers(min_value=1, max_value=9), fraction_quantities())
 def test_opposed_gases_leave_only_odd_powers(order: int, gap: Fraction) -> None:
     """f/(Y + x) - f/(Y - x) = -2 f x / Y^2 - 2 f x^3 / Y^4 - ...: the even powers cancel."""

@@ -183,6 +183,7 @@ def test_each_trajectory_touches_the_envelope_once_where_the_model_says(
 
 
 @given(launch_speeds(), launch_angles(), gravities(), st.floats(min_value=0, max_value=5))
+@example(2.0, 0.0, 9.8, 1.0)  # a horizontal launch: y = -g x^2 / (2 v0^2)
 def test_positions_lie_on_the_trajectory_curve(v0: float, alpha: float, g: float, t: float) -> None:
     """Eliminating t from x(t), y(t) (12.14a-b) gives y(x) (12.14c), whose form the symbolic
     derivation fixes: y = x tan a - g x^k / (d v0^j cos^l a)."""
