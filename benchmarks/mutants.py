@@ -9,7 +9,8 @@ unmutated copy passes and that a mutant that must be killed is killed (so the te
 the copy). ``--only`` retries chosen mutants of the sample, as the run prints them.
 
     python benchmarks/mutants.py [--count 150] [--seed 0] [--timeout 120] [--jobs 2]
-                                 [--only 'mechmodel/x.py:12 swap Add'] [--book PATH]
+                                 [--module series] [--only 'mechmodel/x.py:12 swap Add']
+                                 [--book PATH]
 
 Not part of the default test run.
 """
@@ -57,6 +58,11 @@ class Mutant:
         return f"{self.path}:{self.line} {self.kind}"
 
 
+def _nudgeable(value: object) -> bool:
+    """Ints (nudged by +1) and nonzero floats (by 1%): a float 0.0 times 1.01 is no change."""
+    return type(value) is int or (type(value) is float and value != 0.0)
+
+
 def _sites(tree: ast.AST) -> Iterator[tuple[str, ast.AST]]:
     for node in ast.walk(tree):
         if isinstance(node, ast.BinOp) and type(node.op) in SWAPS:
@@ -68,11 +74,7 @@ def _sites(tree: ast.AST) -> Iterator[tuple[str, ast.AST]]:
             yield f"flip {type(node.ops[0]).__name__}", node
         elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
             yield "drop minus", node
-        elif (
-            isinstance(node, ast.Constant)
-            and type(node.value) in (int, float)
-            and not isinstance(node.value, bool)
-        ):
+        elif isinstance(node, ast.Constant) and _nudgeable(node.value):
             yield "nudge constant", node
         elif (
             isinstance(node, ast.Return)
@@ -178,6 +180,7 @@ def main() -> None:
     parser.add_argument("--count", type=int, default=150)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--timeout", type=float, default=120)
+    parser.add_argument("--module", help="sample the sites of this mechmodel module only")
     parser.add_argument("--jobs", type=int, default=1, help="mutants tried at once (one copy each)")
     parser.add_argument(
         "--only",
@@ -201,6 +204,8 @@ def main() -> None:
         if try_mutant(root, sanity, book, args.timeout) != "killed":
             sys.exit("the sanity mutant survived: are the tests importing the copy?")
         mutants = enumerate_mutants(root)
+        if args.module:
+            mutants = [m for m in mutants if Path(m.path).stem == args.module]
         sample = random.Random(args.seed).sample(mutants, min(args.count, len(mutants)))
         if args.only:
             sample = [m for m in sample if str(m) in args.only]
