@@ -15,6 +15,7 @@ and the verdict summary.
 from __future__ import annotations
 
 import os
+from collections import Counter
 from collections.abc import Generator
 from pathlib import Path
 from typing import Any
@@ -47,6 +48,8 @@ _BOOK = pytest.StashKey[Book | None]()
 _NO_BOOK = pytest.StashKey[str]()
 _CATALOG = pytest.StashKey[Catalog]()
 _EVALUATION = pytest.StashKey[Evaluation]()
+_WORKER_VERDICTS = pytest.StashKey[Counter[str]]()
+_VERDICTS_KEY = "bangcheck_verdicts"  # in an xdist worker's workeroutput
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -137,16 +140,37 @@ def whole_scan(book: Book, catalog: Catalog) -> ScanResult:
     return scan(book, catalog, tuple(c.key for c in book.identity.chapters))
 
 
+def pytest_sessionfinish(session: pytest.Session) -> None:
+    """An xdist worker that evaluated the catalog hands its verdict counts to the controller."""
+    output = getattr(session.config, "workeroutput", None)
+    evaluation = session.config.stash.get(_EVALUATION, None)
+    if output is not None and evaluation is not None:
+        output[_VERDICTS_KEY] = dict(evaluation.verdict_counts())
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_testnodedown(node: Any, error: object) -> None:
+    """The controller keeps the first verdict counts a worker sends (all workers evaluate the
+    same catalog against the same book), so it need not evaluate the catalog once more."""
+    del error
+    counts = getattr(node, "workeroutput", {}).get(_VERDICTS_KEY)
+    if counts is not None and _WORKER_VERDICTS not in node.config.stash:
+        node.config.stash[_WORKER_VERDICTS] = Counter(counts)
+
+
 @pytest.hookimpl(wrapper=True, tryfirst=True)
 def pytest_terminal_summary(
     terminalreporter: Any, exitstatus: int, config: pytest.Config
 ) -> Generator[None]:
     result = yield
-    evaluation = evaluation_of(config)
-    if evaluation is not None:
-        counts = evaluation.verdict_counts()
+    counts = config.stash.get(_WORKER_VERDICTS, None)
+    if counts is None:
+        evaluation = evaluation_of(config)
+        counts = evaluation.verdict_counts() if evaluation is not None else None
+    if counts is not None:
         shown = ", ".join(f"{v} {counts[v]}" for v in VERDICTS if counts[v])
-        terminalreporter.write_line(f"bangcheck verdicts: {len(evaluation)} claims: {shown}")
+        total = sum(counts.values())
+        terminalreporter.write_line(f"bangcheck verdicts: {total} claims: {shown}")
     return result
 
 
