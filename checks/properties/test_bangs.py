@@ -7,6 +7,7 @@ involved (a history compounds rounding over its bangs).
 from __future__ import annotations
 
 import math
+from decimal import Decimal
 from fractions import Fraction
 
 import pytest
@@ -17,6 +18,7 @@ from checks.properties.strategies import (
     drop_speeds,
     exact_histories,
     fraction_masses,
+    fraction_restitutions,
     fraction_velocities,
     masses,
     moderate_fraction_masses,
@@ -29,16 +31,26 @@ from mechmodel.bangs import (
     bang_count,
     bang_history,
     bang_possible,
+    bangs_in_chain,
     ceiling_bounce,
     ceiling_sequence,
+    earth_recoil,
+    energy_ellipse,
+    figures_of_agreement,
     floor_bounce,
+    floor_impulse,
+    galileo_shifted_collision,
     game_over_bang,
+    mass_ratio,
+    sagitta_denominator,
     state_after_bangs,
     velocities_after_bang,
+    x2_final_locus_angle,
     x2_full_transfer_ratio,
+    x2_infinite_ratio_launch,
     x2_launch,
 )
-from mechmodel.collisions import kinetic_energy, momentum
+from mechmodel.collisions import center_of_mass_velocity, collide, kinetic_energy, momentum
 from mechmodel.operators import bang_angle, rotation_picture_bang_count
 
 pytestmark = pytest.mark.properties
@@ -46,13 +58,17 @@ REL = 1e-9
 HISTORY_BANGS = 12
 
 
-@given(fraction_velocities())
-def test_floor_and_ceiling_reverse_the_velocity(v: Fraction) -> None:
+@given(fraction_velocities(), fraction_restitutions(), moderate_fraction_masses())
+def test_floor_and_ceiling_reverse_the_velocity(v: Fraction, e: Fraction, m: Fraction) -> None:
     """An elastic bounce off the floor or the ceiling (an infinite mass) reverses the ball's
     velocity and keeps its speed: (V1, V2) -> (-V1, V2) off the floor, (V1, -V2) off the
-    ceiling (p. 4.11, Fig. 4.7b)."""
+    ceiling (p. 4.11, Fig. 4.7b); with restitution e it leaves at -e v. The floor takes the
+    ball's momentum change m (1 + e) |v|: 2 m |v| elastic, m |v| for a Ka-runch (Fig. 4.2a)."""
     assert floor_bounce(v) == -v
     assert ceiling_bounce(v) == -v
+    assert floor_bounce(v, e) == -e * v == ceiling_bounce(v, e)
+    assert floor_impulse(m, v, e) == abs(m * floor_bounce(v, e) - m * v)
+    assert floor_impulse(m, v) == 2 * floor_impulse(m, v, 0) == 2 * m * abs(v)
 
 
 @given(moderate_fraction_masses(), moderate_fraction_masses(), drop_speeds())
@@ -60,10 +76,22 @@ def test_x2_final_points_lie_on_the_45_degree_line(
     m1: Fraction, m2: Fraction, v0: Fraction
 ) -> None:
     """Every elastic X2 final point has V2 - V1 = 2 V0 (the relative velocity reverses), so all
-    lie on the 45-degree line CPL of Fig. 4.5a, and the bang keeps the kinetic energy."""
+    lie on the 45-degree line CPL of Fig. 4.5a, and the bang keeps the kinetic energy. The
+    launch depends on the mass ratio m1/m2 alone and is proportional to the drop speed (unit
+    speed by default); ball 2 carries away its own share of the kinetic energy."""
     launch = x2_launch(m1, m2, v0)
     assert launch.v2 - launch.v1 == 2 * v0
     assert m1 * launch.v1**2 + m2 * launch.v2**2 == (m1 + m2) * v0**2
+    unit = x2_launch(mass_ratio(m1, m2), 1)
+    assert launch.start == (v0, -v0)
+    assert (launch.v1, launch.v2) == (v0 * unit.v1, v0 * unit.v2)
+    assert launch.speed_ratio == unit.v2
+    assert launch.height_ratio == unit.v2**2
+    share = kinetic_energy((m2,), (launch.v2,)) / kinetic_energy((m1, m2), launch.start)
+    assert launch.energy_transfer == share
+    other = mass_ratio(m1, m2) + 1
+    angle = x2_final_locus_angle(float(v0), [float(mass_ratio(m1, m2)), float(other)])
+    assert math.isclose(angle, math.pi / 4, rel_tol=REL)
 
 
 @given(drop_speeds())
@@ -73,8 +101,10 @@ def test_x2_limits(v0: Fraction) -> None:
     inf = x2_launch(math.inf, 1, v0)
     assert inf.speed_ratio == 3
     assert inf.height_ratio == 9
+    assert x2_infinite_ratio_launch(v0).v2 == 3 * v0
+    assert x2_infinite_ratio_launch().v2 == 3
     ratio = x2_full_transfer_ratio(v0)
-    assert ratio == 3
+    assert ratio == 3 == x2_full_transfer_ratio()
     full = x2_launch(Fraction(ratio), 1, v0)
     assert full.v1 == 0
     assert full.energy_transfer == 1
@@ -82,6 +112,8 @@ def test_x2_limits(v0: Fraction) -> None:
 
 @given(exact_histories())
 @example({"m1": 7, "m2": 1, "y1": 1, "y2": 3, "v1": -1, "v2": -1, "ceiling": 7})  # Fig. 4.7
+@example({"m1": 7, "m2": 1, "y1": 0, "y2": 2, "v1": 1, "v2": -1, "ceiling": 2})  # at the walls
+@example({"m1": 1, "m2": 2, "y1": 1, "y2": 1, "v1": 1, "v2": 0, "ceiling": 3})  # touching
 def test_every_bang_of_a_history_conserves_what_it_should(args: dict[str, Fraction]) -> None:
     """Each bang of the independent collision model (Fig. 4.4-4.7): a ball bang keeps the total
     momentum and kinetic energy exactly and happens where the balls meet; a floor or ceiling
@@ -107,6 +139,38 @@ def test_every_bang_of_a_history_conserves_what_it_should(args: dict[str, Fracti
             assert bang.y2 == args["ceiling"]
             assert after == (before[0], -before[1])
         before, t = after, bang.time
+    assert history.count <= HISTORY_BANGS
+    assert history.ended or history.count == HISTORY_BANGS
+    # Bang-n is listed under its kind, and every n under one kind (Fig. 4.7's numbering)
+    kinds = {FLOOR: history.floor_bangs, BALLS: history.ball_bangs, CEILING: history.ceiling_bangs}
+    assert sorted(n for numbers in kinds.values() for n in numbers) == list(
+        range(1, history.count + 1)
+    )
+    for kind, numbers in kinds.items():
+        assert all(history.bangs[n - 1].kind == kind for n in numbers)
+    # the balls move on straight space-time lines between bangs (Fig. 4.6)
+    assert history.positions_at(0) == (args["y1"], args["y2"])
+    t, y = Fraction(0), (Fraction(args["y1"]), Fraction(args["y2"]))
+    for bang in history.bangs:
+        assert history.positions_at(bang.time) == (bang.y1, bang.y2)
+        mid = history.positions_at((t + bang.time) / 2)
+        assert mid == ((y[0] + bang.y1) / 2, (y[1] + bang.y2) / 2)
+        t, y = bang.time, (bang.y1, bang.y2)
+
+
+@given(exact_histories(), st.integers(min_value=0, max_value=3))
+def test_an_opened_floor_lets_ball_1_through_after_its_bounces(
+    args: dict[str, Fraction], bounces: int
+) -> None:
+    """With the floor opened after k bounces of ball 1 (k = 1: "the floor is open after the
+    initial bounce", the exercise after Fig. 5.1) the history has at most k floor bangs, and it
+    is the closed-floor history up to the (k + 1)-th floor bang that no longer happens."""
+    closed = bang_history(**args, max_bangs=HISTORY_BANGS)
+    opened = bang_history(**args, floor_bounces=bounces, max_bangs=HISTORY_BANGS)
+    assert len(opened.floor_bangs) <= bounces
+    floors = closed.floor_bangs
+    same = floors[bounces] - 1 if len(floors) > bounces else closed.count
+    assert opened.bangs[:same] == closed.bangs[:same]
 
 
 @given(exact_histories())
@@ -165,6 +229,10 @@ def test_an_elastic_sequence_ends_as_the_rotation_picture_predicts(
     assert sequence.count == rotation_picture_bang_count(m1, m2)
     assert not bang_possible(*sequence.velocities[-1])
     assert game_over_bang(m1, m2, v0, -v0) == sequence.count + 1
+    # the floor bounce F, then (C M)^p: 2 p + 1 bangs, and one more if it ends on a ball bang
+    p, odd = divmod(sequence.count, 2)
+    assert bangs_in_chain(p) + odd == sequence.count + 1
+    assert bangs_in_chain(p, 2) == bangs_in_chain(p) + 1
 
 
 @given(masses(), masses())
@@ -238,3 +306,114 @@ def test_an_elastic_bang_changes_neither_momentum_nor_energy(
     Delta P = 0 and Delta KE = 0, exactly for exact inputs."""
     changes = bang_changes(m1, m2, v1, v2)
     assert (changes.momentum_change, changes.energy_change) == (0, 0)
+
+
+@given(fraction_masses(), fraction_masses(), fraction_velocities(), fraction_velocities())
+@example(Fraction(7), Fraction(1), Fraction(1), Fraction(-1))  # the X2 start of Fig. 4.7c
+def test_the_energy_ellipse_is_the_kinetic_energy_through_the_state(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """The KE ellipse m1 v1^2 + m2 v2^2 = 2 KE (3.7b), Fig. 4.7c: its energy is the balls'
+    kinetic energy exactly, it passes through the state (v1, v2), and its shorter semi-axis
+    lies along the heavier ball's velocity."""
+    ellipse = energy_ellipse(m1, m2, v1, v2)
+    assert ellipse.energy == kinetic_energy((m1, m2), (v1, v2))
+    if ellipse.twice_energy:
+        on = float(v1) ** 2 / ellipse.radius_v1**2 + float(v2) ** 2 / ellipse.radius_v2**2
+        assert math.isclose(on, 1, rel_tol=REL)
+        heavy, light = (
+            (ellipse.radius_v1, ellipse.radius_v2)
+            if m1 >= m2
+            else (ellipse.radius_v2, ellipse.radius_v1)
+        )
+        assert (ellipse.minor_radius, ellipse.major_radius) == (heavy, light)
+
+
+@given(
+    moderate_fraction_masses(),
+    moderate_fraction_masses(),
+    fraction_velocities(),
+    fraction_velocities(),
+    fraction_velocities(),
+    drop_speeds(),
+)
+@example(Fraction(1), Fraction(1), Fraction(1), Fraction(-1), Fraction(-1), Fraction(1))
+def test_a_boosted_and_rescaled_collision_is_the_same_collision(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, boost: Fraction, scale: Fraction
+) -> None:
+    """Galileo: boosting every velocity by u and rescaling by s turns the bang's result the same
+    way (Fig. 4.5b: the U line (+1, -1) -> (-1, +1) boosted by -1 is the pool shot
+    (0, -2) -> (-2, 0)); the share of the energy that changes hands, ball 1's loss and ball 2's
+    gain, does not depend on the scale; equal masses, one at rest, hand over all of it."""
+    if (v1 + boost, v2 + boost) == (0, 0):
+        boost += 1
+    shifted = galileo_shifted_collision(m1, m2, v1, v2, boost, scale)
+    assert shifted.before == (scale * (v1 + boost), scale * (v2 + boost))
+    hit = collide(m1, m2, v1, v2)
+    assert shifted.after == tuple(scale * (v + boost) for v in hit.after)
+    total = 2 * kinetic_energy((m1, m2), shifted.before)
+    gained = m2 * (shifted.after[1] ** 2 - shifted.before[1] ** 2)
+    assert shifted.energy_transfer == abs(gained) / total
+    assert galileo_shifted_collision(m1, m2, v1, v2, boost).energy_transfer == (
+        shifted.energy_transfer
+    )
+    if v1 != v2:
+        assert galileo_shifted_collision(m1, m1, v1, v2, -v2, scale).energy_transfer == 1
+
+
+@given(fraction_masses(), fraction_masses(), fraction_velocities())
+def test_the_earth_takes_a_share_m_over_m_of_a_bounce(
+    m: Fraction, earth: Fraction, v0: Fraction
+) -> None:
+    """A ball of mass m hitting an Earth of mass M at rest (Fig. 4.2a): in the COM frame the
+    Earth moves at V_COM = m V0/(m + M), a fraction m/M of the ball's speed for m << M, with
+    the kinetic energy m M/(m + M)^2 of the ball's; swapping the roles keeps the share."""
+    recoil = earth_recoil(m, earth)
+    assert recoil.mass_fraction * earth == m
+    if v0:
+        com = center_of_mass_velocity((m, earth), (v0, 0))
+        share = kinetic_energy((earth,), (com,)) / kinetic_energy((m,), (v0,))
+        assert recoil.energy_fraction == share
+    assert earth_recoil(earth, m).energy_fraction == recoil.energy_fraction
+    assert recoil.energy_fraction <= Fraction(1, 4)
+
+
+@given(
+    st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k),
+    st.floats(min_value=1e-3, max_value=0.999),
+)
+def test_the_flat_spot_depth_tends_to_r2_over_2_r(radius: float, spot: float) -> None:
+    """A flat spot of radius r on a ball of radius R lies d = R - sqrt(R^2 - r^2) deep, so
+    r^2/(R d) = 1 + sqrt(1 - (r/R)^2), the 2 of the sagittal d = r^2/(2R) for r << R
+    (Fig. 4.1); it depends on r/R alone."""
+    k = sagitta_denominator(spot * radius, radius)
+    assert math.isclose(k, 1 + math.sqrt(1 - spot * spot), rel_tol=1e-9)
+    with pytest.raises(ValueError, match="smaller"):
+        sagitta_denominator(radius, radius)
+
+
+@given(
+    st.integers(min_value=2, max_value=9),
+    st.integers(min_value=0, max_value=10),
+    st.integers(min_value=1, max_value=4),
+    st.booleans(),
+    st.integers(min_value=-30, max_value=30),
+)
+@example(6, 1, 3, False, 24)  # the Earth's 6e24 kg for 5.97e24 kg: good to 2 figures
+def test_figures_of_agreement_count_the_rounded_figures(
+    digit: int, zeros: int, last: int, above: bool, exponent: int
+) -> None:
+    """A one-figure value d x 10^e agrees with d.00...0j x 10^e (z zeros after the point, j
+    from 1 to 4) or with the value as far below d to z + 1 significant figures: rounding it to
+    that many gives d, one more figure does not (the Earth's 6e24 kg, 'good to 2 figures',
+    after Fig. 4.2); several pairs agree to the fewest figures of any. A one-figure value agrees
+    with itself to all 15 figures a double holds."""
+    step = Decimal(last).scaleb(-(zeros + 1))
+    precise = float((digit + step if above else digit - step).scaleb(exponent))
+    approx = float(Decimal(digit).scaleb(exponent))
+    assert figures_of_agreement([approx], [precise]) == zeros + 1
+    assert figures_of_agreement([approx, approx], [precise, precise]) == zeros + 1
+    assert figures_of_agreement([approx, approx], [precise, approx]) == zeros + 1
+    assert figures_of_agreement([approx], [approx]) == 15
+    with pytest.raises(ValueError, match="positive"):
+        figures_of_agreement([0.0], [precise])

@@ -9,11 +9,13 @@ from __future__ import annotations
 
 import cmath
 import math
+import re
 from fractions import Fraction
 
 import mpmath
 import pytest
-from hypothesis import given, target
+from hypothesis import example, given, target
+from hypothesis import strategies as st
 
 from checks.properties.strategies import (
     analytic_polynomials,
@@ -31,6 +33,8 @@ from mechmodel import complexfields as cf
 
 pytestmark = pytest.mark.properties
 HALF = Fraction(1, 2)
+EPS = 2.0**-52
+ONES = {(i, j): (1, 1) for i in range(3) for j in range(3)}  # every term (1 + i) x^i y^j
 NONNEGATIVE_POWERS = field_powers().filter(lambda n: n >= 0)
 
 
@@ -49,6 +53,73 @@ def z_poly(terms: dict[int, tuple[int, int]]) -> cf.Poly:
 
 def close(a: float, b: float, tol: float) -> bool:
     return abs(a - b) <= tol
+
+
+def view_at(view: cf.PolyView, z: complex) -> float:
+    """The real polynomial printed as ``view`` ("x2y1": coefficient of x^2 y) at x + i y."""
+    total = 0.0
+    for name, c in view.coefficients.items():
+        i, j = map(int, re.fullmatch(r"x(\d+)y(\d+)", name).groups())
+        total += float(c) * z.real**i * z.imag**j
+    return total
+
+
+def combined(*weighted: tuple[Fraction, cf.PolyView]) -> dict[str, Fraction]:
+    """The coefficients of sum w_k p_k for printed polynomials p_k (zero terms dropped)."""
+    out: dict[str, Fraction] = {}
+    for w, view in weighted:
+        for name, c in view.coefficients.items():
+            out[name] = out.get(name, Fraction(0)) + w * c
+    return {k: c for k, c in out.items() if c != 0}
+
+
+# --- exact polynomials and their printed form ------------------------------------------------
+
+
+@given(xy_polynomials(), xy_polynomials(), gaussian_integers(), gaussian_integers())
+@example(ONES, ONES, (2, 1), (0, 3))
+def test_polynomials_evaluate_as_the_functions_they_stand_for(
+    p_terms: dict, q_terms: dict, u: tuple[int, int], v: tuple[int, int]
+) -> None:
+    """Evaluation is a ring homomorphism: the variables take the values u and v, sums and
+    products evaluate to sums and products of the values, and the float evaluation agrees with
+    the exact one; a polynomial in z, z* rewritten in x, y has at the real point (x, y) the value
+    it has at z = x + i y, z* = x - i y (10.31)."""
+    p, q = xy_poly(p_terms), xy_poly(q_terms)
+    gu, gv = gaussian(u), gaussian(v)
+    assert cf.X.at(gu, gv) == gu
+    assert cf.Y.at(gu, gv) == gv
+    assert (p + q).at(gu, gv) == p.at(gu, gv) + q.at(gu, gv)
+    assert (p * q).at(gu, gv) == p.at(gu, gv) * q.at(gu, gv)
+    cu, cv = complex(*u), complex(*v)
+    scale = sum(abs(complex(c)) * abs(cu) ** a * abs(cv) ** b for (a, b), c in p.terms.items())
+    assert abs(p.at_complex(cu, cv) - complex(p.at(gu, gv))) <= 1e-12 * (1 + scale)
+    x, y = u
+    z, zstar = cf.Gaussian(x, y), cf.Gaussian(x, -y)
+    assert cf.zpoly_to_xy(p).at(x, y) == p.at(z, zstar)
+    half = Fraction(x, 2)
+    assert cf.Gaussian.of(float(half)) == cf.Gaussian(half, 0)  # floats convert exactly
+    assert cf.Gaussian.of(complex(x, y) / 4) == cf.Gaussian(Fraction(x, 4), Fraction(y, 4))
+
+
+@given(xy_polynomials(), st.integers(1, 12))
+@example({(i, j): (0, 0) for i in range(3) for j in range(3)}, 1)  # the zero polynomial
+def test_a_printed_polynomial_is_over_its_least_common_denominator(terms: dict, q: int) -> None:
+    """The book prints a real polynomial over the least common denominator of its
+    coefficients, (3x^2 + y^2)/2 (10.35), (10.54): numerator/denominator gives back each
+    coefficient, no integer above 1 divides the denominator and all numerators (the zero
+    polynomial is 0/1), and only a real polynomial has such a form."""
+    p = xy_poly(terms)
+    view = cf.poly_view(p.real_part() * Fraction(1, q))
+    back = {k: Fraction(n, view.denominator) for k, n in view.numerators.items()}
+    assert back == view.coefficients
+    assert math.gcd(view.denominator, *view.numerators.values()) == 1
+    assert view.size == max((abs(c) for c in view.coefficients.values()), default=0)
+    both = cf.complex_view(p * Fraction(1, q))
+    assert both.denominator == math.lcm(both.real.denominator, both.imag.denominator)
+    if not p.imag_part().is_zero():
+        with pytest.raises(ValueError, match="real coefficients"):
+            cf.poly_view(p)
 
 
 # --- (10.31)-(10.32): the z- and z*-derivatives ---------------------------------------------
@@ -89,24 +160,36 @@ def test_analytic_potentials_obey_cauchy_riemann(terms: dict) -> None:
 @pytest.mark.parametrize("n", [n for n in range(-6, 7) if n != -1])
 def test_level_lines_of_power_potentials_cross_at_right_angles(n: int) -> None:
     """The Phi-equipotentials and A-streamlines of the potential of z^n meet at 90 degrees
-    everywhere off the poles (Fig. 10.13), numerically by central differences."""
-    for z in (complex(0.7, 0.4), complex(-1.3, 0.2), complex(0.1, -2.0)):
+    everywhere off the poles, at every distance from them (Fig. 10.13), numerically by
+    central differences; the origin itself is a pole or a zero of the field (no angle)."""
+    for z in (complex(0.7, 0.4), complex(-1.3, 0.2), complex(0.1, -2.0), 1 + 0j, 600 - 800j):
         angle = cf.level_line_angle(n, z.real, z.imag)
         assert close(angle.value, math.pi / 2, angle.error)
+    with pytest.raises(ValueError, match="origin"):
+        cf.level_line_angle(n, 0, 0)
 
 
-@given(gaussian_integers())
-def test_the_laminar_field_has_no_divergence_and_no_curl(a: tuple[int, int]) -> None:
+@given(gaussian_integers(), off_origin_points())
+def test_the_laminar_field_has_no_divergence_and_no_curl(a: tuple[int, int], z: complex) -> None:
     """f(z) = a z plotted as f*(z*) = a* z* has df*/dz = 0, div F = 0 and curl F = 0 (10.32),
-    Fig. 10.7, for every complex a."""
+    Fig. 10.7, for every complex a; its printed components are the plotted vector
+    F = (Re f*, Im f*) at every point, F = (x, -y) for the book's f(z) = z (Fig. 10.7)."""
     field = cf.conjugate_linear_field(*a)
     assert field.dfstar_dz_size == field.divergence_size == field.curl_size == 0
+    fx, fy = cf.plot_field(lambda w: complex(*a) * w, z)
+    tol = 1e-12 * (1 + abs(complex(*a))) * abs(z)
+    assert close(view_at(field.field_x, z), fx, tol)
+    assert close(view_at(field.field_y, z), fy, tol)
+    unit = cf.conjugate_linear_field()
+    assert (unit.field_x.coefficients, unit.field_y.coefficients) == ({"x1y0": 1}, {"x0y1": -1})
 
 
 @given(small_fractions())
 def test_factor_pairs_of_the_potentials_sum_to_one(f: Fraction) -> None:
     """F = f grad Phi + j curl A for an analytic potential exactly when f + j = 1 (10.34)."""
-    assert cf.complementary_potential_factor(f).j == 1 - f
+    pair = cf.complementary_potential_factor(f)
+    assert pair.j == 1 - f
+    assert pair.total == 1 == cf.potential_factor_sum()
 
 
 @given(NONNEGATIVE_POWERS, gaussian_integers())
@@ -116,6 +199,31 @@ def test_the_power_potential_gives_its_field(n: int, a: tuple[int, int]) -> None
         a = (1, 0)
     p = cf.power_field_potential(n, *a)
     assert (p.grad_x, p.grad_y) == (p.field_x, p.field_y) == (p.curl_x, p.curl_y)
+
+
+@given(NONNEGATIVE_POWERS, gaussian_integers(), off_origin_points())
+def test_the_power_potential_is_linear_in_the_strength_and_plots_its_field(
+    n: int, a: tuple[int, int], z: complex
+) -> None:
+    """phi = a z^(n+1)/(n+1) is linear in the complex strength: Phi_a + i A_a = a (Phi_1 + i A_1)
+    with the unit potential of z^n, phi = z^2/2 with Phi = (x^2 - y^2)/2 and A = xy for the
+    field z of Fig. 10.7; at every point Phi and A are Re phi and Im phi, and the printed field
+    is the plotted F = (Re f*, Im f*) of f = a z^n (10.35)."""
+    re_a, im_a = Fraction(a[0]), Fraction(a[1])
+    unit, p = cf.power_field_potential(n), cf.power_field_potential(n, *a)
+    assert p.phi.coefficients == combined((re_a, unit.phi), (-im_a, unit.a))
+    assert p.a.coefficients == combined((im_a, unit.phi), (re_a, unit.a))
+    if n == 1:
+        assert unit.phi.coefficients == {"x0y2": -HALF, "x2y0": HALF}
+        assert unit.a.coefficients == {"x1y1": 1}
+    strength = complex(*a)
+    tol = 1e-12 * (1 + abs(strength)) * (1 + 2 * abs(z)) ** (n + 1)
+    big_phi, big_a = cf.potential_parts(lambda w: strength * w ** (n + 1) / (n + 1), z)
+    assert close(big_phi, view_at(p.phi, z), tol)
+    assert close(big_a, view_at(p.a, z), tol)
+    fx, fy = cf.plot_field(lambda w: strength * w**n, z)
+    assert close(fx, view_at(p.field_x, z), tol)
+    assert close(fy, view_at(p.field_y, z), tol)
 
 
 # --- power rule, multipoles ------------------------------------------------------------------
@@ -129,15 +237,78 @@ def test_the_power_potential_differentiates_back_to_its_field(n: int) -> None:
     assert (back.coefficient, back.power) == (1, n)
 
 
-def test_only_z_to_the_minus_one_lacks_a_power_potential() -> None:
-    """The logarithmic case n = -1 is the one exception to the power rule (10.38)."""
+@given(st.integers(-8, 6), st.integers(-8, 6))
+@example(-1, -1)
+@example(-8, -2)
+@example(-1, 6)  # the scan's whole range
+def test_only_z_to_the_minus_one_lacks_a_power_potential(first: int, second: int) -> None:
+    """In every range of powers the logarithmic case n = -1 is the one exception to the power
+    rule (10.38), and the one power whose loop integral around the origin is not zero (10.39):
+    the 2^0-pole, m = n + 1 = 0 (10.44); a range without it has neither."""
+    lowest, highest = sorted((first, second))
     assert cf.exceptional_power(-20, 20) == -1
+    if lowest <= -1 <= highest:
+        assert cf.exceptional_power(lowest, highest) == -1
+        loop = cf.nonzero_loop_powers(lowest, highest)
+        assert (loop.powers, loop.field_power, loop.m) == ((-1,), -1, 0)
+        return
+    with pytest.raises(ArithmeticError, match="found"):
+        cf.exceptional_power(lowest, highest)
+    with pytest.raises(ArithmeticError, match="found"):
+        cf.nonzero_loop_powers(lowest, highest)
+
+
+@pytest.mark.parametrize(("lowest", "highest"), [(-9, 0), (-2, 7)])
+def test_the_loop_scan_stays_where_its_rule_is_exact(lowest: int, highest: int) -> None:
+    """The 16-node rule (checked on 8 nodes) integrates z^n exactly only for |n + 1| < 8
+    (10.39): a scan of the loop integrals beyond that is refused."""
+    with pytest.raises(ValueError, match="scan range"):
+        cf.nonzero_loop_powers(lowest, highest)
+
+
+@given(small_fractions(), field_powers().filter(lambda n: n != -1))
+@example(Fraction(3), 2)  # strength n + 1: the potential z^3 itself
+@example(Fraction(1), -3)  # the book's -2 phi = 1/z^2 (Fig. 10.14)
+@example(Fraction(0), 1)
+def test_the_inverse_power_potential_differentiates_back_to_its_field(a: Fraction, n: int) -> None:
+    """phi = (a/(n+1)) z^(n+1) is the potential of the field a z^n: d phi/dz = a z^n (10.35a),
+    and its normalizer is the reciprocal of its coefficient (-2 phi = 1/z^2 for the field 1/z^3,
+    Figs. 10.11, 10.14); a zero strength has no potential to normalize."""
+    if a == 0:
+        with pytest.raises(ValueError, match="strength"):
+            cf.inverse_power_potential(a, n)
+        return
+    phi = cf.inverse_power_potential(a, n)
+    back = cf.laurent_derivative(phi.coefficient, phi.power)
+    assert (back.coefficient, back.power) == (a, n)
+    assert phi.normalizer * phi.coefficient == 1
+
+
+@given(st.integers(1, 10))
+def test_inverse_powers_have_frequency_n_and_fall_off_as_r_to_the_minus_n(n: int) -> None:
+    """1/z^n = e^(-i n theta)/r^n and its conjugate 1/z*^n = e^(i n theta)/r^n (Figs. 10.11,
+    10.14): both have the frequency n of cos n theta and sin n theta, their phases turn in
+    opposite senses, and both fall off as r^-n."""
+    f, g = cf.inverse_power_polar(n), cf.conjugate_inverse_power_polar(n)
+    assert close(f.frequency, n, 1e-12 * n)
+    assert close(g.frequency, n, 1e-12 * n)
+    assert (f.phase_sign, g.phase_sign) == (-1, 1)
+    assert close(f.radius_power, -n, 1e-12 * n)
+    assert close(g.radius_power, -n, 1e-12 * n)
 
 
 @pytest.mark.parametrize("k", range(8))
 def test_each_z_derivative_doubles_the_sources(k: int) -> None:
-    """A 2^k-pole built by k (-)copies has 2^k distinct sources (10.41), (10.43)."""
+    """A 2^k-pole built by k (-)copies of a unit 1-pole has 2^k distinct sources of strength
+    +1 and -1 (10.41), (10.43), and its moments sum q p^m below the k-th vanish: its
+    expansion starts at z^-(k+1) (10.44)."""
     assert cf.multipole_pole_count(k) == 2**k
+    sources = cf.multipole_sources(k)
+    strengths = sorted(q for q, _ in sources)
+    assert strengths == ([1] if k == 0 else [-1] * 2 ** (k - 1) + [1] * 2 ** (k - 1))
+    size = max(abs(p) for _, p in sources) or 1.0
+    for m in range(k):
+        assert abs(sum(q * p**m for q, p in sources)) <= 1e-12 * 2**k * size**m
 
 
 @pytest.mark.parametrize("k", range(7))
@@ -164,12 +335,18 @@ def test_laurent_terms_and_multipoles_correspond_one_to_one(n: int) -> None:
 
 @given(off_origin_points())
 def test_the_dipole_pair_tends_to_the_point_dipole(z: complex) -> None:
-    """f_dipole / Delta -> -a/z^2 as the separation Delta -> 0 (10.41): the error is O(Delta^2)."""
+    """f_dipole / Delta -> -a/z^2 as the separation Delta -> 0 (10.41): the error is O(Delta^2);
+    at any separation it is the sum of the fields a/(z - p) of its two line sources."""
     pair = cf.dipole_pair(2)
     separation = 1e-4
     limit = complex(pair.point_dipole_coefficient) / z**2
     ratio = cf.dipole_pair_field(z, separation) / separation
     assert abs(ratio - limit) <= 10 * (separation / abs(z)) ** 2 * abs(limit) + 1e-9 * abs(limit)
+    wide = 0.25  # the pair is the sum of its two line-source fields a/(z - p) (10.38)
+    sources = [(1, complex(-wide / 2)), (-1, complex(wide / 2))]
+    total = cf.multipole_field(z, sources)
+    assert abs(total - cf.dipole_pair_field(z, wide)) <= 1e-12 * (abs(total) + 1 / abs(z))
+    assert abs(cf.multipole_field(z, [(1, z / 2)]) * z / 2 - 1) <= 1e-12
 
 
 def test_the_quadrupole_factors_are_exact() -> None:
@@ -204,9 +381,11 @@ def test_the_loop_integral_of_an_analytic_function_vanishes(terms: list, circle:
 
 
 @given(laurent_terms(), loop_circles())
+@example([(7.0, -3.0, -1)], (0.0, 0.0, 2.0))
 def test_a_pole_gives_its_residue(terms: list, circle: tuple) -> None:
     """The loop integral of sum c_k z^k is 2 pi i c_-1 if the circle encloses the pole at the
-    origin and zero if it does not (10.39), (10.44)."""
+    origin and zero if it does not (10.39), (10.44). The error estimate of the double-precision
+    rule never claims more than double precision: it is at least eps |result|."""
     cx, cy, radius = circle
     loop = cf.laurent_loop_integral([list(t) for t in terms], cx, cy, radius)
     residue = sum(complex(re, im) for re, im, k in terms if k == -1)
@@ -216,17 +395,46 @@ def test_a_pole_gives_its_residue(terms: list, circle: tuple) -> None:
     reach = max(abs(complex(cx, cy)) + radius, 1 / max(abs(abs(complex(cx, cy)) - radius), 1e-3))
     tol = loop.real.error + 1e-12 * size * 2 * math.pi * radius * reach**4
     assert abs(got - expected) <= tol
+    assert loop.real.error >= EPS * abs(got)
 
 
-@pytest.mark.parametrize("n", range(-6, 7))
+@pytest.mark.parametrize(
+    ("centre", "allowed"), [(11.0, True), (10.95, False), (-9.0, True), (-9.1, False)]
+)
+def test_a_loop_may_pass_no_closer_to_the_pole_than_a_tenth_of_its_radius(
+    centre: float, allowed: bool
+) -> None:
+    """A circle of radius 10 whose edge passes 1 = r/10 from the pole of 1/z is integrated (to
+    zero outside, 2 pi i inside: (10.39)); one passing closer is refused."""
+    if not allowed:
+        with pytest.raises(ValueError, match="too close"):
+            cf.laurent_loop_integral([[1, 0, -1]], centre, 0, 10)
+        return
+    loop = cf.laurent_loop_integral([[1, 0, -1]], centre, 0, 10)
+    expected = 2j * math.pi if abs(centre) < 10 else 0j
+    assert abs(complex(loop.real.value, loop.imag.value) - expected) <= loop.real.error + 1e-12
+
+
+@pytest.mark.parametrize("n", range(-9, 8))
 def test_only_the_monopole_term_has_a_loop_integral(n: int) -> None:
     """The loop integral of a (z - c)^n around c is 2 pi i a for n = -1 and zero otherwise
-    (10.39), (10.45), at 30 digits."""
-    for a, centre, radius in ((1 + 0j, 0j, 1.0), (-2 + 3j, 0.5 - 1.5j, 0.25), (0.5j, -3 + 1j, 4.0)):
+    (10.39), (10.45), at 30 digits; by default for the unit source on the unit circle. The
+    error estimate is never below the working precision of the result. The rule on 16 nodes
+    (and its check on 8) is exact only for |n + 1| < 8: other powers are refused."""
+    if not -8 < n + 1 < 8:
+        with pytest.raises(ValueError, match=r"power must be in \(-9, 7\)"):
+            cf.power_loop_integral(n)
+        return
+    cases = ((1 + 0j, 0j, 1.0), (-2 + 3j, 0.5 - 1.5j, 0.25), (0.5j, -3 + 1j, 4.0))
+    for a, centre, radius in (*cases, (300 - 400j, 0j, 2.0)):
         loop = cf.power_loop_integral(n, a.real, a.imag, centre.real, centre.imag, radius)
         expected = 2j * math.pi * a if n == -1 else 0j
         got = complex(loop.real.value, loop.imag.value)
         assert abs(got - expected) <= loop.real.error + 1e-14 * (1 + abs(a))
+        assert loop.real.error >= 10.0**-cf.DIGITS * abs(got)
+    unit = cf.power_loop_integral(n)
+    got = complex(unit.real.value, unit.imag.value)
+    assert abs(got - (2j * math.pi if n == -1 else 0j)) <= unit.real.error + 1e-14
 
 
 @given(gaussian_integers())
@@ -237,6 +445,10 @@ def test_a_line_source_has_flux_2_pi_re_a_and_circulation_minus_2_pi_im_a(a: tup
     tol = src.flux.error + 1e-13 * (1 + abs(complex(float(a[0]), float(a[1]))))
     assert close(src.flux.value, 2 * math.pi * float(a[0]), tol)
     assert close(src.circulation.value, -2 * math.pi * float(a[1]), tol)
+    assert (src.star_numerator_re, src.star_numerator_im) == (a[0], -a[1])
+    unit = cf.line_source()  # the unit real source a = q = 1 of Fig. 10.9(a)
+    assert close(unit.flux.value, 2 * math.pi, unit.flux.error + 1e-13)
+    assert close(unit.circulation.value, 0, unit.circulation.error + 1e-13)
 
 
 @pytest.mark.parametrize("index", range(-5, 6))
@@ -245,6 +457,9 @@ def test_contour_integration_recovers_every_laurent_coefficient(index: int) -> N
     check = cf.laurent_coefficient_check(index)
     assert close(check.two_pi.value, 2 * math.pi, check.two_pi.error + 1e-14)
     assert abs(check.residual.value) <= check.residual.error + 1e-14
+    assert check.weight_power == -index - 1
+    with pytest.raises(ValueError, match="index"):
+        cf.laurent_coefficient_check(index + 11 if index < 0 else index - 11)
 
 
 @pytest.mark.parametrize("order", range(7))
@@ -253,6 +468,12 @@ def test_cauchys_derivative_formula_holds_for_every_order(order: int) -> None:
     is the only one that works."""
     d = cf.cauchy_derivative(order)
     assert close(d.two_pi.value, 2 * math.pi, d.two_pi.error + 1e-14)
+    # the integral is 2 pi/|b - a|^(n+1) while the integrand reaches r^-n/(|b - a| + r) on the
+    # circle |z - a| = r: at DIGITS digits, that cancellation bounds the relative precision
+    distance, r = abs(cf._CAUCHY_POLE - cf._CAUCHY_CENTER), cf._CAUCHY_RADIUS
+    floor = 10.0**-cf.DIGITS * (distance / r) ** order * distance / (distance + r)
+    for part, size in ((d.two_pi, 2 * math.pi), (d.numerator, math.factorial(order))):
+        assert part.error >= floor * size
     assert close(d.numerator.value, math.factorial(order), d.numerator.error + 1e-12)
     assert close(d.taylor_numerator.value, 1.0, d.taylor_numerator.error + 1e-14)
     assert cf.cauchy_kernel(order).power == order + 1
@@ -265,11 +486,18 @@ def test_cauchys_derivative_formula_holds_for_every_order(order: int) -> None:
 def test_the_stereographic_map_inverts_radii_through_half_angles(
     theta: float, diameter: float
 ) -> None:
-    """|z| |w| = D^2 (w = 1/z on the unit-diameter sphere), |z| = D tan(theta/2), and the image
+    """The centre O is halfway up the sphere (radius D/2, exact for an exact D);
+    |z| |w| = D^2 (w = 1/z on the unit-diameter sphere), |z| = D tan(theta/2), and the image
     of |z| through the sphere is |w|; the angles at the poles, the chords SP = D cos(theta/2),
     NP = D sin(theta/2) and the depths D sin^2(theta/2), D cos^2(theta/2) all use the half
-    angle (Fig. 10.15)."""
+    angle (Fig. 10.15). The poles (theta = 0, pi) and the equator (|z| = |w|) have no such
+    construction."""
     p = cf.stereographic_projection(theta, diameter)
+    for pole_or_equator in (0.0, math.pi / 2, math.pi):
+        with pytest.raises(ValueError, match="theta"):
+            cf.stereographic_projection(pole_or_equator, diameter)
+    assert p.radius == diameter / 2
+    assert cf.stereographic_projection(theta, Fraction(diameter)).radius == Fraction(diameter) / 2
     assert close(p.z_radius * p.w_radius, diameter**2, 1e-9 * diameter**2)
     assert close(p.z_radius, diameter * math.tan(theta / 2), 1e-9 * max(1, p.z_radius))
     image = cf.stereographic_image_radius(p.z_radius, diameter)

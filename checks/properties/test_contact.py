@@ -79,9 +79,12 @@ def test_constant_target_removes_the_fall_energy(height: Fraction, distance: Fra
 
 
 @given(fraction_quantities(), fraction_quantities())
+@example(Fraction(0), Fraction(0))  # no force over no distance
 def test_ramp_work_is_half_force_times_distance(force: Fraction, distance: Fraction) -> None:
-    """A linear force ramp does the triangle's work F d / 2, exactly."""
+    """A linear force ramp does the triangle's work F d / 2 (the area under F(x), (7.5a)),
+    exactly; over no distance it does none."""
     assert contact.ramp_work(force, distance) == force * distance / 2
+    assert contact.ramp_work(force, 0) == 0
 
 
 @given(fraction_quantities(), fraction_quantities())
@@ -105,6 +108,27 @@ def test_linear_target_takes_up_the_energy(a: float, h: float, scale: float) -> 
 # --- the soft-contact integrator --------------------------------------------------------------
 
 
+def _contact_time(m1: float, m2: float, speed: float, power: float, strength: float = 1.0) -> float:
+    """How long two balls closing at ``speed`` stay in touch under F = k y^n: the overlap obeys
+    mu y'' = -k y^n (mu the reduced mass), so the time is 2 (y_max / v) times the integral of
+    1 / sqrt(1 - u^(n+1)) over [0, 1], sqrt(pi) Gamma(1 + q) / Gamma(1/2 + q), q = 1/(n+1)."""
+    mu = m1 * m2 / (m1 + m2)
+    q = 1 / (power + 1)
+    deepest = ((power + 1) * mu * speed * speed / (2 * strength)) ** q
+    return 2 * deepest / speed * math.sqrt(math.pi) * math.gamma(1 + q) / math.gamma(0.5 + q)
+
+
+def _check_record(run: contact.SoftCollision, starts: list[float], duration: float) -> None:
+    """The run's record: its masses, a trajectory that starts at the start and ends at the last
+    release, whose time is ``duration`` (within 1e-9 relative)."""
+    assert math.isclose(run.duration, duration, rel_tol=1e-9)
+    assert run.times[0] == 0
+    assert run.times[-1] == run.duration
+    assert list(run.times) == sorted(run.times)
+    assert [row[0] for row in run.positions] == starts
+    assert all(len(row) == len(run.times) for row in run.positions)
+
+
 @given(soft_masses(), soft_masses(), closing_speeds(), contact_powers())
 @example(7.0, 1.0, 2.0, 4.0)  # the 7:1 pair of Fig. 7.6, quartic
 @example(7.0, 1.0, 2.0, 1.0)  # and linear (Fig. 7.7)
@@ -112,9 +136,13 @@ def test_soft_collision_conserves_energy_and_momentum(
     m1: float, m2: float, speed: float, power: float
 ) -> None:
     """Two balls pushing with F = k y^n while they overlap leave with the kinetic energy and
-    the momentum they came with, for any power law and mass ratio."""
+    the momentum they came with, for any power law and mass ratio (Figs. 7.5-7.7); they part
+    once (their first touch is the start), after the contact time of mu y'' = -k y^n."""
     run = contact.soft_collision([m1, m2], [0.0, 0.0], [speed, 0.0], power)
     v1, v2 = (e.value for e in run.velocities)
+    assert run.masses == (m1, m2)
+    assert run.touches == 1
+    _check_record(run, [0.0, 0.0], _contact_time(m1, m2, speed, power))
     p_in, p_out = m1 * speed, m1 * v1 + m2 * v2
     target(run.energy_error, label="relative energy error")
     assert run.energy_error <= SOFT_ENERGY_DRIFT
@@ -126,8 +154,11 @@ def test_separated_balls_follow_the_elastic_collision_map(
     m1: float, m2: float, speed: float, power: float, gap: float
 ) -> None:
     """Balls that start apart and collide once leave with the velocities of the elastic bang
-    (4.1), mechmodel.collisions.collide, within the integrator's declared error."""
+    (4.1), mechmodel.collisions.collide, within the integrator's declared error: they touch
+    after flying the gap and part after the contact time of mu y'' = -k y^n."""
     run = contact.soft_collision([m1, m2], [0.0, gap], [speed, 0.0], power, strength=1.0)
+    assert run.touches == 2
+    _check_record(run, [0.0, gap], gap / speed + _contact_time(m1, m2, speed, power))
     expected = collide(m1, m2, speed, 0.0).after
     errors = [abs(got.value - want) for got, want in zip(run.velocities, expected, strict=True)]
     target(max(errors) / speed, label="relative velocity error")

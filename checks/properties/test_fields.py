@@ -19,11 +19,14 @@ from checks.properties.strategies import (
     clock_hours,
     clock_sizes,
     fraction_coefficients,
+    fraction_quantities,
+    lengths,
     oscillator_amplitudes,
     oscillator_frequencies,
     oscillator_times,
     planet_radii,
     radial_fractions,
+    rationals,
     slopes,
     surface_gravities,
 )
@@ -80,12 +83,35 @@ def test_chord_motion_conserves_energy(g: float, radius: float, offset: float, t
 
 @given(surface_gravities(), planet_radii(), oscillator_times())
 def test_tunnel_keeps_pace_with_the_grazing_orbit(g: float, radius: float, t: float) -> None:
-    """A body dropped through the diameter tunnel always has the x of the satellite in the
-    grazing circular orbit (speed sqrt(gR), (9.7b)): they meet on the far side (Fig. 9.8)."""
+    """A body dropped through the diameter tunnel always has the x and the x-velocity of the
+    satellite in the grazing circular orbit (speed sqrt(gR), (9.7b)): they meet on the far side
+    (Fig. 9.8)."""
     omega = fields.circular_orbit_speed(g, radius) / radius
     time = t * fields.tunnel_period(g, radius) / 10
-    s, _ = fields.chord_tunnel_position(g, radius, 0.0, time)
+    s, v = fields.chord_tunnel_position(g, radius, 0.0, time)
     assert close(s, radius * math.cos(omega * time), radius, TRIG)
+    assert close(v, -radius * omega * math.sin(omega * time), radius * omega, TRIG)
+
+
+@given(
+    surface_gravities(),
+    planet_radii(),
+    chord_offsets(),
+    st.floats(min_value=1e-9, max_value=9.0),
+)
+@example(9.8, 6.4e6, 0.0, 0.5)  # halfway out to twice the radius
+def test_no_tunnel_reaches_outside_the_planet(
+    g: float, radius: float, offset: float, excess: float
+) -> None:
+    """A tunnel runs inside the planet: a point R (1 + excess) from the centre is on no chord,
+    and a chord as far from the centre as the surface is no tunnel (Fig. 9.8); both are a
+    ValueError, never a number."""
+    r = radius * (1 + excess)
+    d = offset * radius
+    with pytest.raises(ValueError, match="outside"):
+        fields.chord_acceleration(g, radius, d, math.sqrt(r * r - d * d))
+    with pytest.raises(ValueError, match="inside"):
+        fields.chord_tunnel_period(g, radius, math.copysign(radius, offset))
 
 
 @given(surface_gravities(), planet_radii())
@@ -111,6 +137,17 @@ def test_field_and_potential_are_continuous_at_the_surface(g: float, radius: flo
     assert close(outside_f, -g, g, 4 * REL)
     assert close(inside_u, -g * radius, g * radius)
     assert close(outside_u, -g * radius, g * radius)
+
+
+@given(surface_gravities(), planet_radii())
+def test_the_centre_feels_no_pull_and_is_the_bottom_of_the_well(g: float, radius: float) -> None:
+    """At the centre the linear field -g r / R (9.4a) vanishes and the parabolic potential has
+    its bottom, -3 g R / 2 (Fig. 9.7: (x^2 - 3)/2 at x = 0); r is a distance, never negative."""
+    assert fields.gravity_field(g, radius, 0.0) == 0
+    assert close(fields.gravity_potential(g, radius, 0.0), -1.5 * g * radius, g * radius)
+    for law in (fields.gravity_field, fields.gravity_potential):
+        with pytest.raises(ValueError, match="distance"):
+            law(g, radius, -radius / 2)
 
 
 @given(surface_gravities(), planet_radii(), radial_fractions())
@@ -163,7 +200,35 @@ def test_escape_speed_is_root_two_times_orbit_speed(g: float, radius: float) -> 
     """Ve = v0 sqrt(2) = sqrt(2gR) (9.11a): the kinetic energy of escape is twice the orbit's."""
     speeds = fields.surface_speeds(g, radius)
     assert close(speeds.escape, speeds.orbit * math.sqrt(2), speeds.escape, 4 * REL)
+    assert close(speeds.escape_over_orbit, math.sqrt(2), 1.0, 4 * REL)
+    assert close(speeds.orbit_over_escape, math.sqrt(0.5), 1.0, 4 * REL)
+    assert close(speeds.escape_factor, 2.0, 1.0, 4 * REL)  # Ve^2 = 2 g R
     assert close(speeds.escape, fields.escape_speed_from_orbit_speed(speeds.orbit), speeds.escape)
+
+
+@given(lengths())
+def test_sphere_area_is_the_slope_of_its_volume(radius: float) -> None:
+    """A sphere of radius r has the area 4 pi r^2 (the bang-ball count falls off as its
+    inverse, after Fig. 9.5) and the ball the volume 4 pi r^3 / 3 (7.4): the area is dV/dr, a
+    shell's volume per unit thickness, and doubling the radius quadruples the area."""
+    area = fields.sphere_area(radius)
+    h = radius * 1e-6
+    slope = (fields.sphere_volume(radius + h) - fields.sphere_volume(radius - h)) / (2 * h)
+    assert math.isclose(slope, area, rel_tol=1e-9)
+    assert math.isclose(fields.sphere_area(2 * radius), 4 * area, rel_tol=4 * REL)
+
+
+@given(fraction_quantities(), fraction_quantities(), fraction_quantities(), fraction_quantities())
+def test_gravity_falls_off_as_the_inverse_square(
+    big_g: Fraction, m1: Fraction, m2: Fraction, r: Fraction
+) -> None:
+    """Newton's F = G m1 m2 / r^2 (9.3), exactly: symmetric in the masses, a quarter at twice the
+    distance, and at a planet's surface the weight m g with g = G M / R^2."""
+    force = fields.gravitational_force(big_g, m1, m2, r)
+    assert force * r * r == big_g * m1 * m2
+    assert fields.gravitational_force(big_g, m2, m1, r) == force
+    assert fields.gravitational_force(big_g, m1, m2, 2 * r) == force / 4
+    assert fields.weight(m2, fields.gravitational_force(big_g, m1, 1, r)) == force
 
 
 @given(surface_gravities(), planet_radii(), surface_gravities())
@@ -203,6 +268,7 @@ def test_each_dimension_keeps_its_energy(
     target(error / scale, label="relative energy error")
     assert error <= TRIG * scale
     assert close(later.energy_x, omega * omega * ax * ax / 2, scale, TRIG)
+    assert close(later.energy_y, omega * omega * ay * ay / 2, scale, TRIG)
 
 
 @given(
@@ -240,6 +306,22 @@ def test_quadrature_orbit_is_the_ellipse_of_its_amplitudes(
     assert close((quad.x / a) ** 2 + (quad.y / b) ** 2, 1.0, 1.0, TRIG)
     line = fields.oscillator_orbit(omega, a, b, 0.0, 0.0, t)
     assert close(line.y, b / a * line.x, abs(b), TRIG)
+
+
+@given(lengths(), st.floats(min_value=-1.0, max_value=1.0))
+@example(2.0, 1.0)  # the top of the swing
+def test_initial_phase_puts_the_oscillator_at_its_start(amplitude: float, u: float) -> None:
+    """x = X sin(alpha) (9.8b) gives back the start x0 for the phase alpha found, which lies in
+    [-pi/2, pi/2]; starting at the top of the swing needs alpha = pi/2 (Fig. 9.10a), and a
+    start beyond the swing is a ValueError."""
+    x0 = u * amplitude
+    alpha = fields.oscillator_initial_phase(x0, amplitude)
+    assert close(amplitude * math.sin(alpha), x0, amplitude, 4 * REL)
+    assert abs(alpha) <= math.pi / 2
+    if u == 1:
+        assert alpha == math.pi / 2
+    with pytest.raises(ValueError, match="outside"):
+        fields.oscillator_initial_phase(2 * amplitude, amplitude)
 
 
 # --- the parabola: focus, directrix, kites (Figs. 9.1, 9.3, 9.4) ------------------------------
@@ -280,18 +362,82 @@ def test_force_triangle_altitude_is_constant(a: Fraction, x: float) -> None:
     assert close(tri.base + tri.altitude * slope, 0.0, abs(tri.base) + abs(tri.altitude * slope))
 
 
+@given(fraction_coefficients(), rationals(-10, 10, 12))
+@example(Fraction(3), Fraction(0))  # the vertex: no force, no slope
+def test_force_triangles_are_exact_and_alike_at_the_vertex(a: Fraction, x: Fraction) -> None:
+    """On U = a x^2 the Hooke force is F = -dU/dx = -2 a x, minus the central difference
+    quotient (exact for a parabola), and every force triangle has the scale and the altitude
+    1/(2a) and the base -x, the vertex's too as the limit of its neighbours' (Fig. 9.1a)."""
+    tri = fields.force_triangle(a, x)
+    h = Fraction(1, 7)
+    assert tri.force == -(a * (x + h) ** 2 - a * (x - h) ** 2) / (2 * h)
+    assert tri.scale == tri.altitude == 1 / (2 * a)
+    assert tri.base == -x
+
+
+@given(fraction_coefficients(), rationals(-10, 10, 12))
+@example(Fraction(3), Fraction(0))  # the tip, where the normal is the axis itself
+def test_every_normal_meets_the_axis_lambda_above_its_point(a: Fraction, x: Fraction) -> None:
+    """The normal at any point of y = a x^2 crosses the axis lambda = 1/(2a) higher up, the
+    constant vertical of the tangent-kites of Fig. 9.4: the rise is x over the tangent's slope,
+    a central difference quotient (exact for a parabola); at the tip, its limit lambda."""
+    geo = fields.parabola_geometry(a)
+    h = Fraction(1, 7)
+    tangent = (geo.height(x + h) - geo.height(x - h)) / (2 * h)
+    rise = geo.semi_latus_rectum if x == 0 else x / tangent
+    assert geo.subnormal(x) == rise == 1 / (2 * a)
+
+
+@given(fraction_coefficients(), st.integers(min_value=0, max_value=6), rationals(-10, 10, 12))
+@example(Fraction(3), 1, Fraction(0))  # a linear potential pushes at the origin too
+@example(Fraction(3), 0, Fraction(1))  # a constant potential does not push at all
+def test_power_law_force_is_minus_the_slope(a: Fraction, n: int, x: Fraction) -> None:
+    """F = -dU/dx of U = a x^n (Force = -Slope, (6.9); Hooke's F = -2x of Fig. 9.1b): x F = -n U
+    exactly, as the power rule has it, and F is minus the complex-step slope of U; a power below
+    1 has an infinite force at x = 0, a ValueError."""
+    n = max(n, 1) if x == 0 else n
+    force = fields.power_law_force(a, n, x)
+    assert x * force == -n * a * x**n
+    step = 1e-30
+    expected = -(float(a) * (float(x) + step * 1j) ** n).imag / step
+    assert close(float(force), expected, abs(expected) + float(a))
+    if x == 0:
+        assert force == (-a if n == 1 else 0)
+        with pytest.raises(ValueError, match="infinite"):
+            fields.power_law_force(a, Fraction(1, 2), x)
+
+
 @given(fraction_coefficients(), fraction_coefficients())
 def test_similar_triangles_square_exactly(x: Fraction, unit: Fraction) -> None:
-    """The two-step construction of Fig. 9.1a gives y = x^2 / unit exactly."""
+    """The two-step construction of Fig. 9.1a gives y = x^2 / unit exactly (y = x^2 for the
+    default unit 1)."""
     assert fields.parabola_point(x, unit) == x * x / unit
+    assert fields.parabola_point(x) == x * x
 
 
 @given(slopes())
+@example(1.0)  # y = x and y = -x
+@example(0.0)  # the axis: its normal is vertical, with no slope
 def test_normal_lines_are_perpendicular(slope: float) -> None:
-    """The lines y = s x and y = -x/s meet at 90 degrees (Fig. 9.2)."""
+    """The lines y = s x and y = -x/s meet at 90 degrees (Fig. 9.2); a horizontal line's normal
+    has no slope."""
+    if slope == 0:
+        with pytest.raises(ValueError, match="vertical"):
+            fields.normal_slope(slope)
+        return
     assume(abs(slope) > 1e-6)
     normal = fields.normal_slope(slope)
     assert close(fields.angle_between_lines(slope, normal), math.pi / 2, 1.0, 4 * REL)
+
+
+@given(slopes(), slopes())
+@example(10.0, -10.0)  # steep lines either side of the vertical: an acute angle between them
+def test_angle_between_lines_is_the_acute_angle_of_their_directions(s1: float, s2: float) -> None:
+    """Lines of slopes s1 and s2 meet at the acute angle whose tangent is |s2 - s1| / |1 + s1 s2|
+    (the cross and dot products of their directions (1, s1) and (1, s2)): 0 to 90 degrees, the
+    90-degree marks of Fig. 9.2 for y = s x and y = -x/s."""
+    expected = math.atan2(abs(s2 - s1), abs(1 + s1 * s2))
+    assert close(fields.angle_between_lines(s1, s2), expected, 1.0, 4 * REL)
 
 
 @given(slopes())
@@ -326,6 +472,18 @@ def test_clock_hours_wrap_onto_the_dial(hour: int, lead: int, clock: int) -> Non
     later = fields.clock_hour(hour, lead, clock)
     assert (later - hour - lead) % clock == 0
     assert -Fraction(clock, 2) < later <= Fraction(clock, 2)
+
+
+@given(st.integers(min_value=1, max_value=100), st.integers(min_value=1, max_value=12))
+@example(1, 1)  # one point per period
+def test_an_orbit_of_whole_steps_has_one_point_per_step(points: int, step: int) -> None:
+    """An orbit drawn one point per step over a period of points x step time units has exactly
+    that many points (exercise 1.9.5: 24 points for 24 hours); a period that is not a whole
+    number of steps is a ValueError."""
+    assert fields.points_per_orbit(points * step, step) == points
+    if step > 1:
+        with pytest.raises(ValueError, match="whole number"):
+            fields.points_per_orbit(points * step + 1, step)
 
 
 @given(planet_radii(), radial_fractions())

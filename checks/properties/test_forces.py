@@ -67,6 +67,8 @@ def test_adiabatic_potential_gives_the_bang_force(
     assert error <= 8 * REL
     assert abs(bang.inverse_power - 3) <= POWER
     assert abs(slope.inverse_power - 3) <= POWER
+    assert math.isclose(bang.force_gap_per_energy, 2, rel_tol=8 * REL)  # F = 2 KE / Y
+    assert math.isclose(slope.force_gap_per_energy, 2, rel_tol=16 * REL)
     assert math.isclose(forces.kinetic_energy_factor(m2, v0, y0, y), 0.5, rel_tol=8 * REL)
 
 
@@ -78,9 +80,17 @@ def test_adiabatic_action_is_constant(v0: Fraction, y0: Fraction, y: Fraction) -
 
 @given(positive_quantities(), positive_quantities(), gaps())
 def test_isothermal_potential_gives_the_isothermal_force(m2: float, v2: float, y: float) -> None:
-    """-dU/dY of U = -m2 v2^2 ln Y is the isothermal force m2 v2^2 / Y (6.11)."""
+    """-dU/dY of U = -m2 v2^2 ln Y is the isothermal force m2 v2^2 / Y = 2 KE / Y (6.11): the
+    slope of the potential itself (a central difference), zero at Y = 1, and the slope the
+    model takes."""
     law = forces.isothermal_potential_force(m2, v2, y)
     assert math.isclose(law.force, m2 * v2 * v2 / y, rel_tol=8 * REL)
+    assert math.isclose(law.force_gap_per_energy, 2, rel_tol=8 * REL)
+    h = y * 1e-5
+    potential = forces.isothermal_potential
+    quotient = (potential(m2, v2, y + h) - potential(m2, v2, y - h)) / (2 * h)
+    assert math.isclose(-quotient, law.force, rel_tol=1e-8)
+    assert potential(m2, v2, 1) == 0
 
 
 @given(positive_quantities(), force_powers(), gaps())
@@ -108,6 +118,9 @@ def test_opposed_gases_leave_only_odd_powers(order: int, gap: Fraction) -> None:
     for k, c in enumerate(series.total):
         assert c == (0 if k % 2 == 0 else -2 / gap ** (k + 1))
     assert series.spring_per_force_constant == 2 / gap**2
+    unit = forces.opposed_isothermal_series(order)  # the gap defaults to 1: k = 2 f
+    assert unit == forces.opposed_isothermal_series(order, 1)
+    assert unit.total[1] == -2
 
 
 @given(positive_quantities(), positive_quantities(), gaps())
@@ -128,6 +141,8 @@ def test_harmonic_period_does_not_depend_on_amplitude(k: float, m: float, a: flo
     """The Hooke oscillator's period is 2 pi / omega whatever the amplitude (after (6.12))."""
     period = forces.oscillation_period(m, k / 2, 2, a)
     assert math.isclose(period * math.sqrt(k / m), 2 * math.pi, rel_tol=16 * REL)
+    product = forces.harmonic_period_times_frequency(k, m)
+    assert math.isclose(product, 2 * math.pi, rel_tol=16 * REL)
 
 
 @given(positive_quantities(), well_powers(), positive_quantities())
@@ -139,12 +154,42 @@ def test_power_well_period_scales_with_amplitude(m: float, p: float, a: float) -
     assert math.isclose(two / one, 2 ** (1 - p / 2), rel_tol=1e-9)
 
 
+@given(positive_quantities(), well_powers(), positive_quantities())
+@example(1.0, 1.5, 1.0)  # the sharpest kink of |x|^p at the centre that the wells draw
+def test_power_well_period_is_the_turning_point_integral(m: float, p: float, a: float) -> None:
+    """The period in U = s |x|^p (s = 1) is 4 sqrt(m / 2) A^(1 - p/2) times the integral of
+    1 / sqrt(1 - u^p) over [0, 1], sqrt(pi) Gamma(1 + 1/p) / Gamma(1/2 + 1/p) (E = KE + PE
+    (6.6)-(6.7) solved for the speed); 2 pi sqrt(m / 2) for the Hooke well (6.12). Gauss-Chebyshev
+    quadrature meets it within 1e-5 (its error comes from the kink of |x|^p at x = 0)."""
+    beta = math.sqrt(math.pi) * math.gamma(1 + 1 / p) / math.gamma(0.5 + 1 / p)
+    expected = 4 * math.sqrt(m / 2) * a ** (1 - p / 2) * beta
+    assert math.isclose(forces.oscillation_period(m, 1, p, a), expected, rel_tol=1e-5)
+
+
+@given(st.lists(fraction_quantities(), min_size=1, max_size=6), fraction_quantities())
+def test_the_integral_of_a_derivative_is_the_change(
+    coefficients: list[Fraction], x: Fraction
+) -> None:
+    """The power rule and its inverse, exactly: the integral from 0 to x of dp/dx is
+    p(x) - p(0) for any polynomial (force is minus the slope of the potential and the potential
+    minus the integral of the force, (6.9), (6.12))."""
+    derivative = forces.polynomial_derivative(coefficients)
+    assert len(derivative) == len(coefficients) - 1
+    value = sum(c * x**k for k, c in enumerate(coefficients))
+    assert forces.polynomial_integral(derivative, x) == value - coefficients[0]
+
+
 @given(fraction_quantities(), fraction_quantities())
 def test_toss_height_and_launch_speed_agree(v: Fraction, g: Fraction) -> None:
     """g h = V^2 / 2 (6.13a), exactly; and sqrt(2 g h) gives back V (6.13b)."""
     h = forces.toss_height(v, g)
     assert g * h == v * v / 2
     assert math.isclose(forces.launch_speed(h, g), v, rel_tol=4 * REL)
+    assert math.isclose(forces.launch_speed_factor(h, g), 2, rel_tol=4 * REL)
+    fall = forces.fall_from_height(h, g)  # the toss backwards: from rest, h = g t^2 / 2
+    assert math.isclose(float(g) * fall.time * fall.time / 2, h, rel_tol=8 * REL)
+    assert math.isclose(fall.speed, float(g) * fall.time, rel_tol=4 * REL)
+    assert math.isclose(fall.speed_squared_per_g, 2 * h, rel_tol=4 * REL)
     assert forces.toss_height(v, -g) == h  # the sign of g is the book's up-positive convention
 
 
@@ -161,11 +206,21 @@ def test_trapped_ball_action_is_constant(
     v_wall: Fraction, gap: Fraction, bangs: int, data: st.DataObject
 ) -> None:
     """The range times the speed stays the same bang after bang (Fig. 6.4): Delta x v2 is an
-    adiabatic invariant of the ball trapped by a steadily closing wall, exactly."""
+    adiabatic invariant of the ball trapped by a steadily closing wall, exactly; the range is
+    what the big ball, closing steadily from -gap at t = 0, leaves of the gap at each wall bang,
+    and a bang that leaves the little ball at rest is a ValueError."""
     v_ball = data.draw(st.fractions(min_value=-v_wall, max_value=v_wall, max_denominator=12))
     run = forces.trapped_ball(v_wall, v_ball, gap, bangs)
     assert len(set(run.products)) == 1
     assert all(b - a == 2 * v_wall for a, b in itertools.pairwise(run.speeds))
+    # the big ball closes steadily from -gap at t = 0; the first crossing takes gap / v2
+    assert run.times[0] * run.speeds[0] == gap
+    for t, x, v, action in zip(run.times, run.ranges, run.speeds, run.products, strict=True):
+        assert x == gap - v_wall * t > 0
+        assert action == x * v
+    assert list(run.times) == sorted(set(run.times))
+    with pytest.raises(ValueError, match="does not reach"):  # the bang leaves it at rest
+        forces.trapped_ball(v_wall, 2 * v_wall, gap, bangs)
 
 
 @given(fraction_quantities(), st.integers(min_value=0, max_value=12), st.data())
@@ -173,9 +228,11 @@ def test_monster_bongs_add_twice_the_monster_speed(
     v_monster: Fraction, bongs: int, data: st.DataObject
 ) -> None:
     """Each bong with a closing monster adds 2 V1 to the atom's speed (Figs. 6.5-6.6), exactly,
-    and the atom's velocity alternates in sign."""
+    and the atom's velocity alternates in sign: from rest 0, 2, -4, 6, ... times V1."""
     start = data.draw(st.fractions(min_value=-v_monster, max_value=v_monster, max_denominator=12))
     path = forces.monster_pair(v_monster, start, bongs)
+    from_rest = (0, 2 * v_monster, -4 * v_monster, 6 * v_monster)  # the left one hits first
+    assert forces.monster_pair(v_monster, 0, 3) == from_rest
     for before, after in itertools.pairwise(path):
         assert abs(after) - abs(before) == 2 * v_monster
         assert before == 0 or (after > 0) != (before > 0)

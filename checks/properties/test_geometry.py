@@ -36,12 +36,21 @@ from mechmodel.geometry import (
     clock_angle,
     complement,
     degrees_of_freedom,
+    doubled_clock_points,
+    function_range,
     golden_ratio,
+    grid_speed,
     hypotenuse,
     minkowski_slope,
     newton_slope,
     percent_grade,
+    precision_parts,
+    principal_range,
+    quadrant_fraction,
+    regular_polygon_interior_angle,
     rescaled_slope,
+    right_triangle_sides,
+    slope,
     slope_angle,
     thales_angle,
     thales_means,
@@ -91,6 +100,18 @@ def test_tangent_and_cotangent_are_inverse(sigma: float) -> None:
     """tan σ cot σ = 1: a slope in Fig. 1.2a is the inverse slope in Fig. 1.2b (line 1168)."""
     s = unit_circle_segments(sigma)
     assert close(s.tangent * s.cotangent, 1.0)
+
+
+@given(lengths())
+def test_on_the_x_axis_the_tangent_vanishes_and_the_cotangent_is_infinite(r: float) -> None:
+    """At σ = 0 the radius lies along the x-axis (Fig. 1.4b turned down to the axis): the
+    tangent segment shrinks to 0 and the secant point is the circle's own point, sec = r,
+    while the cotangent and cosecant lines run parallel to the y-axis and never meet it."""
+    s = unit_circle_segments(0.0, r)
+    assert (s.base, s.altitude, s.tangent, s.secant) == (r, 0, 0, r)
+    for name in ("cotangent", "cosecant"):
+        with pytest.raises(ValueError, match="infinite"):
+            getattr(s, name)
 
 
 @given(angles())
@@ -143,20 +164,43 @@ def test_grade_is_slope_over_incline(m: float) -> None:
 # -- arc functions and their two solutions (Fig. 1.7) ------------------------------------------
 @given(unit_interval_values())
 @example(0.5)  # Fig. 1.7a
+@example(-1.0)  # the ends of the range of sine
+@example(1.0)
 def test_both_arcsine_solutions_give_the_value(a: float) -> None:
-    """sin σ1 = sin σ2 = a for σ1 = sin⁻¹(a) and its x-reflection σ2 = π - σ1 (Fig. 1.7a)."""
+    """sin σ1 = sin σ2 = a for σ1 = sin⁻¹(a) and its x-reflection σ2 = π - σ1 (Fig. 1.7a): the
+    reflection keeps the altitude and reverses the base."""
     sol = arc_solutions("sin", a)
     assert close(math.sin(sol.first), a, math.pi)
     assert close(math.sin(sol.second), a, math.pi)
+    assert close(math.cos(sol.second), -math.cos(sol.first), math.pi)
 
 
 @given(unit_interval_values())
 @example(0.5)  # Fig. 1.7b
+@example(-1.0)  # the ends of the range of cosine
+@example(1.0)
 def test_both_arccosine_solutions_give_the_value(b: float) -> None:
-    """cos σ1 = cos σ2 = b for σ1 = cos⁻¹(b) and its y-reflection σ2 = -σ1 (Fig. 1.7b)."""
+    """cos σ1 = cos σ2 = b for σ1 = cos⁻¹(b) and its y-reflection σ2 = -σ1 (Fig. 1.7b): the
+    reflection keeps the base and reverses the altitude."""
     sol = arc_solutions("cos", b)
     assert close(math.cos(sol.first), b, math.pi)
     assert close(math.cos(sol.second), b, math.pi)
+    assert close(math.sin(sol.second), -math.sin(sol.first), math.pi)
+
+
+@given(
+    st.floats(min_value=1.0, max_value=2.0, exclude_min=True),
+    st.sampled_from(("sin", "cos")),
+    st.sampled_from((-1, 1)),
+)
+def test_no_arc_reaches_beyond_the_unit_circle(x: float, function: str, sign: int) -> None:
+    """The altitude sin σ and the base cos σ of a point of the unit circle run from -1 to +1
+    (Fig. 1.7a-b, lines 1821-1830), so sin σ = x and cos σ = x have no real solution for
+    |x| > 1."""
+    r = function_range(function)
+    assert (r.lower, r.upper) == (-1, 1)
+    with pytest.raises(ValueError, match="no real solution"):
+        arc_solutions(function, sign * x)
 
 
 @given(slopes())
@@ -167,6 +211,7 @@ def test_both_arctangent_solutions_give_the_value(t: float) -> None:
     sol = arc_solutions("tan", t)
     for sigma in (sol.first, sol.second):
         assert close(math.sin(sigma), t * math.cos(sigma), 1.0 + abs(t))
+    assert close(sol.separation, -math.pi)  # the antipode, half a turn back
 
 
 @given(slopes(), lengths())
@@ -179,6 +224,10 @@ def test_atan2_solutions_are_antipodal(a: float, b: float) -> None:
     r = math.hypot(a, b)
     assert close(r * math.cos(sol.first), b, r)
     assert close(r * math.sin(sol.first), a, r)
+    on_axes = [(s.first, s.second) for s in (arctan_solutions(1, 0), arctan_solutions(0, 1))]
+    assert on_axes == [(math.pi / 2, -math.pi / 2), (0, math.pi)]
+    with pytest.raises(ValueError, match="no direction"):
+        arctan_solutions(0, 0)
 
 
 @given(unit_interval_values())
@@ -188,6 +237,23 @@ def test_calculator_answers_lie_in_the_principal_range(a: float) -> None:
     sol = arc_solutions("sin", a)
     assert -math.pi / 2 <= sol.first <= math.pi / 2
     assert not -math.pi / 2 < sol.second < math.pi / 2
+
+
+@given(unit_interval_values(), slopes())
+@example(-1.0, 0.0)
+def test_the_principal_ranges_are_spanned_by_the_calculator_answers(a: float, t: float) -> None:
+    """sin⁻¹ and tan⁻¹ answer from -π/2 to +π/2, cos⁻¹ from 0 to π and atan2 over the whole
+    turn, -π to +π (Fig. 1.7c, lines 1834-1846): the ends are the answers at the extreme
+    arguments, and
+    every answer lies in between."""
+    ranges = {f: principal_range(f) for f in ("sin", "cos", "tan", "atan2")}
+    ends = {f: (r.lower, r.upper) for f, r in ranges.items()}
+    assert ends["sin"] == (math.asin(-1), math.asin(1))
+    assert ends["cos"] == (math.acos(1), math.acos(-1))
+    assert ends["tan"] == (math.atan(-math.inf), math.atan(math.inf))
+    assert ends["atan2"] == (math.atan2(-0.0, -1), math.atan2(0.0, -1))
+    for f, value in (("sin", a), ("cos", a), ("tan", t)):
+        assert ranges[f].lower <= arc_solutions(f, value).first <= ranges[f].upper
 
 
 # -- circles, arcs and chords (Figs. 1.3 and 1.6) -----------------------------------------------
@@ -204,7 +270,17 @@ def test_arc_is_longer_than_its_chord(sigma: float, r: float) -> None:
     """r σ > 2 r sin(σ/2) for 0 < σ < 2π: the straight line is the shortest path (line 1436:
     the π/3 arc is 4.72 % longer than its chord)."""
     assert arc_length(sigma, r) > chord(sigma, r)
-    assert arc_chord_excess(sigma) > 0
+    excess = arc_chord_excess(sigma)
+    assert excess > 0
+    assert close(excess + 1, arc_length(sigma, r) / chord(sigma, r))  # the same on every circle
+    assert close(total_sector_area(sigma, r), arc_length(sigma, r) * r)
+    assert close(arc_length(turn_angle(1), r), 2 * math.pi * r)  # the circumference
+
+
+def test_the_sixty_degree_arc_is_four_point_seven_percent_longer() -> None:
+    """The π/3 arc over the chord RX, of length r, is π/3 - 1 = 4.72 % longer (Fig. 1.6b,
+    lines 1436-1440)."""
+    assert close(arc_chord_excess(math.pi / 3), math.pi / 3 - 1, 1.0)
 
 
 @given(lengths())
@@ -216,9 +292,38 @@ def test_chord_of_sixty_degrees_is_the_radius(r: float) -> None:
 
 @given(st.integers(min_value=0, max_value=48), st.integers(min_value=1, max_value=48))
 @example(3, 12)  # exercise 3: 3 hours of the 12-point clock is 90°
+@example(1, 1)  # a one-hour clock: an hour is the whole turn
 def test_clock_angle_is_the_fraction_of_a_turn(hours: int, per_turn: int) -> None:
-    """h hours of an N-hour clock sweep h/N of a turn (exercise 3)."""
-    assert close(clock_angle(hours, per_turn), turn_angle(Fraction(hours, per_turn)))
+    """h hours of an N-hour clock sweep h/N of a turn (exercise 3); bisecting every hour arc
+    doubles the points (the 24-hour clock from the 12-point one), and 2h of the new hours
+    sweep the same angle."""
+    angle = clock_angle(hours, per_turn)
+    assert close(angle, turn_angle(Fraction(hours, per_turn)))
+    doubled = doubled_clock_points(per_turn)
+    assert doubled == 2 * per_turn
+    assert close(clock_angle(2 * hours, doubled), angle)
+
+
+@given(st.integers(min_value=3, max_value=1000))
+@example(3)  # the equilateral triangle of Euclid's construction: 60 degrees (Fig. 1.6)
+def test_the_outer_angles_of_a_regular_polygon_make_one_turn(n: int) -> None:
+    """Walking round a regular n-gon turns by π minus the interior angle at each corner, and
+    by one whole turn in all: the interior angle is (n - 2) π / n, π/3 for the triangle of the
+    60 degree slope (line 1431, Fig. 1.6)."""
+    interior = regular_polygon_interior_angle(n)
+    assert close(n * (math.pi - interior), turn_angle(1), n * math.pi)
+
+
+@given(st.integers(min_value=0, max_value=4))
+@example(4)
+def test_each_quadrant_is_a_quarter_turn(q: int) -> None:
+    """The four quadrants are quarter turns (Fig. 1.3b): q of them hold q/4 of all directions
+    (line 1818: never answering in the 3rd quadrant is wrong 25 % of the time), all four the
+    whole turn, and there is no fifth."""
+    assert close(turn_angle(quadrant_fraction(q)), q * complement(0))
+    assert quadrant_fraction(4) == 1
+    with pytest.raises(ValueError, match="four quadrants"):
+        quadrant_fraction(5)
 
 
 # -- slopes of velocity lines (Fig. 1.2) --------------------------------------------------------
@@ -226,8 +331,11 @@ def test_clock_angle_is_the_fraction_of_a_turn(hours: int, per_turn: int) -> Non
 @example(Fraction(10), Fraction(1, 10), Fraction(1, 10))  # the VW: 10 mph, 0.1 mile per 6 s
 def test_minkowski_and_newton_slopes_are_inverse(v: Fraction, sx: Fraction, sy: Fraction) -> None:
     """A velocity line's slope on the time vs. space plot is the inverse of its slope on the
-    space vs. time plot (line 1080; 6/1 against 1/6 for the VW), exactly."""
+    space vs. time plot (line 1080; 6/1 against 1/6 for the VW), exactly. The 1:1 line covers
+    one square s_x per square s_y (line 1084), so speed v climbs v s_y / s_x squares."""
     assert minkowski_slope(v, sx, sy) * newton_slope(v, sx, sy) == 1
+    assert grid_speed(sx, sy) * sy == sx
+    assert newton_slope(v, sx, sy) * sx == v * sy
 
 
 @given(
@@ -246,15 +354,35 @@ def test_rescalings_compose(
     assert twice == rescaled_slope(m, fx1 * fx2, fy1 * fy2)
 
 
+@given(fraction_slopes(), fraction_lengths(), fraction_lengths())
+@example(Fraction(1), Fraction(5280), Fraction(60))  # 1 mile per minute is 88 feet per second
+def test_a_slope_is_altitude_over_base_and_grows_with_the_distance_scale(
+    m: Fraction, fx: Fraction, fy: Fraction
+) -> None:
+    """A triangle of base b and slope m has altitude m b (Fig. 1.2, "= a/b"); rescaling the
+    distance unit by f_x and the time unit by f_y multiplies every slope by f_x / f_y, so equal
+    factors change nothing (lines 1087-1094: slope 1 in miles per minute is 88 in ft/s)."""
+    assert slope(m * fx, fx) == m
+    assert rescaled_slope(m, fx, fy) * fy == m * fx
+    assert rescaled_slope(m, fx, fx) == m
+
+
 # -- whirling rectangles and the golden ratio (Figs. 1.5 and 1.10) -------------------------------
 @given(acute_angles(), st.integers(min_value=2, max_value=12))
 @example(1.0, 5)  # Fig. 1.5
+@example(1.0, 2)  # the shortest sequence: tan σ and 1
 def test_whirling_sequence_is_geometric(sigma: float, terms: int) -> None:
     """Each segment of the whirling sequence {tan σ, 1, cot σ, cot^2 σ, ...} is the one before
     shrunk by cot σ: a geometric (power) sequence (lines 1390-1391)."""
     w = whirling_rectangles(sigma, terms)
     for before, after in zip(w.lengths, w.lengths[1:], strict=False):
         assert close(after, before * w.scale_factor)
+    assert len(w.lengths) == terms
+    assert close(w.lengths[0], math.tan(sigma))
+    assert w.lengths[1] == 1
+    assert close(w.rotation, math.pi / 2)  # each is the one before turned a quarter turn
+    assert close(w.first_angle, sigma - math.pi / 2, math.pi)  # along the tangent line
+    assert len(whirling_rectangles(sigma).lengths) == 5  # Fig. 1.5
 
 
 @given(st.integers(min_value=3, max_value=20))
@@ -294,6 +422,7 @@ def test_means_are_ordered(a: float, b: float) -> None:
     m = thales_means(a, b)
     assert m.arithmetic >= m.geometric * (1 - REL)
     assert m.geometric >= m.harmonic * (1 - REL)
+    assert close(m.geometric**2, a * b)
 
 
 @given(fraction_lengths(), fraction_lengths())
@@ -314,6 +443,7 @@ def test_angle_in_a_semicircle_is_right(a: float, b: float) -> None:
 
 @given(secants())
 @example(3.0)  # exercise 2: sec⁻¹ 3, tangent √8
+@example(1.0)  # on the circle: no tangent, angle 0
 def test_arcsecant_construction(s: float) -> None:
     """The tangent from x = s to the unit circle is √(ab) with a = s - 1, b = s + 1, so its
     square is s^2 - 1, and the angle it makes has secant s (Fig. 1.8)."""
@@ -332,7 +462,19 @@ def test_pythagorean_triples_are_exact(m: int, n: int) -> None:
     assert hypotenuse(m * m - n * n, 2 * m * n) == m * m + n * n
 
 
+@given(acute_angles(), lengths())
+@example(math.pi / 3, 1.0)  # the 30-60-90 triangle, (b : a : r) = (1 : √3 : 2) (line 1584)
+def test_the_right_triangle_of_a_slope_angle(sigma: float, b: float) -> None:
+    """The right triangle of slope angle σ on base b has altitude b tan σ, so its slope is
+    tan σ, and hypotenuse b sec σ, with a^2 + b^2 = r^2 (Fig. 1.4b; Pythagoras, line 1387)."""
+    t = right_triangle_sides(sigma, b)
+    assert t.base == b
+    assert close(slope(t.altitude, t.base), math.tan(sigma))
+    assert close(hypotenuse(t.altitude, t.base), t.hypotenuse)
+
+
 @given(molecule_sizes())
+@example(3)  # water: 3 vibrations
 def test_degrees_of_freedom_add_up(atoms: int) -> None:
     """An N-atom molecule has 3N degrees of freedom: 3 translational, 3 rotational and
     3N - 6 vibrational (Landscape 1.2)."""
@@ -347,3 +489,13 @@ def test_unit_circle_in_mpmath_precision(sigma: float) -> None:
     with mpmath.workdps(50):
         s = unit_circle_segments(mpmath.mpf(sigma))
         assert abs(s.base**2 + s.altitude**2 - 1) < mpmath.mpf(10) ** -45
+
+
+@given(st.integers(min_value=0, max_value=30))
+@example(3)  # 1 part in 1,000 (line 1438)
+def test_each_order_of_precision_resolves_ten_times_more_parts(k: int) -> None:
+    """Absolute precision of order k resolves 10^k parts, one more digit ten times as many
+    (line 1438, the estimates of Fig. 1.6b: order 3 is 1 part in 1,000); order 0 resolves the
+    whole."""
+    assert precision_parts(k + 1) == 10 * precision_parts(k)
+    assert precision_parts(0) == 1

@@ -75,6 +75,8 @@ def test_hamiltonian_is_pv_minus_l_at_the_tangent_point(
     assert _close(h.value, p * v - _quartic(a, b)(v), p * v)
     slope = a * v + b * v**3
     assert abs(slope - p) <= 1e-6 * (abs(p) + 1)
+    with pytest.raises(ValueError, match="lower < upper"):
+        lagrange.legendre_transform(_quartic(a, b), p, v, v)  # an empty search interval
 
 
 @cache
@@ -124,6 +126,21 @@ def test_l_e_and_h_are_one_energy(pairs: list[tuple[Fraction, Fraction]]) -> Non
         lagrange.quasi_velocities([float(m) for m in masses], [float(v) for v in velocities])
     )
     assert _close(est, float(lag), rel=1e-12)
+
+
+@given(exact_masses(), exact_velocities())
+@example(Fraction(8, 5), Fraction(1))  # Fig. 12.3: L = 1.0 at v = 1.0 with slope p = 1.6
+def test_legendre_tangents_meet_the_axes_at_minus_the_transform(m: Fraction, v: Fraction) -> None:
+    """The tangent to L = m v^2/2 at v has slope p = dL/dv = m v (12.10a) and meets the L axis
+    at L - p v = -H(p), H = p^2/(2m) (12.11b, Fig. 12.3a); the tangent to H at p, of slope
+    v = dH/dp, meets the H axis at -L (12.11a, Fig. 12.3b). Exact."""
+    lag = lagrange.kinetic_energy([m], [v])
+    (p,) = lagrange.momenta([m], [v])
+    ham = lagrange.hamiltonian_free([m], [p])
+    tangent = lagrange.legendre_tangent(lag, p, v)
+    assert (tangent.transform, tangent.intercept) == (ham, -ham)
+    back = lagrange.legendre_tangent(ham, v, p)
+    assert (back.transform, back.intercept) == (lag, -lag)
 
 
 @given(exact_square_mass_ratios())
@@ -256,14 +273,49 @@ def test_euler_lagrange_residual_vanishes_on_oscillator_orbits(
     f = lagrange.polar_forces(mass, state)
     scale = mass * (abs(state.rddot) + state.r * state.phidot**2 + state.r) + 1
     assert abs(res_r) <= 1e-9 * scale
-    assert abs(res_phi) <= 1e-9 * (abs(f.coriolis) + mass * state.r**2 * abs(state.phiddot) + 1)
+    angular = mass * state.r**2 * abs(state.phiddot)
+    assert abs(res_phi) <= 1e-9 * (abs(f.coriolis) + angular + 1)
+    # a central force keeps p_phi: the Coriolis term balances M r^2 phi'' (12.33)
+    assert abs(f.coriolis + mass * state.r**2 * state.phiddot) <= 1e-9 * (angular + 1)
+
+
+@given(
+    oscillator_orbits(),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.3, max_value=3),
+)
+def test_euler_lagrange_residual_vanishes_on_anisotropic_orbits(
+    orbit: tuple[float, float, float, float, float], mass: float, wy: float
+) -> None:
+    """The polar Lagrange equations (12.25c), (12.33) hold for the non-central oscillator
+    U = M (x^2 + wy^2 y^2)/2, whose x = A cos(t + a), y = B cos(wy t + b): with
+    dU/dr = M r (cos^2 + wy^2 sin^2) and dU/dphi = M r^2 (wy^2 - 1) sin cos, the angular
+    momentum changes at d p_phi/dt = -dU/dphi."""
+    a_amp, b_amp, a, b, t = orbit
+    pos = (a_amp * math.cos(t + a), b_amp * math.cos(wy * t + b))
+    vel = (-a_amp * math.sin(t + a), -wy * b_amp * math.sin(wy * t + b))
+    state = lagrange.polar_state(pos, vel, (-pos[0], -wy * wy * pos[1]))
+    if state.r < 1e-3:
+        return  # polar coordinates are singular at the origin
+    c, s = math.cos(state.phi), math.sin(state.phi)
+    du_dr = mass * state.r * (c * c + wy * wy * s * s)
+    du_dphi = mass * state.r**2 * (wy * wy - 1) * s * c
+    res_r, res_phi = lagrange.euler_lagrange_residual(mass, state, (du_dr, du_dphi))
+    f = lagrange.polar_forces(mass, state)
+    scale = mass * (abs(state.rddot) + state.r * state.phidot**2 + state.r * (1 + wy * wy))
+    assert abs(res_r) <= 1e-9 * (scale + 1)
+    assert abs(res_phi) <= 1e-9 * (
+        abs(f.coriolis) + abs(f.angular_momentum_rate) + scale * state.r + 1
+    )
+    assert abs(f.angular_momentum_rate + du_dphi) <= 1e-9 * (abs(f.coriolis) + scale * state.r + 1)
 
 
 @given(oscillator_orbits(), st.floats(min_value=0.1, max_value=10))
 def test_hamiltonian_is_total_energy(
     orbit: tuple[float, float, float, float, float], mass: float
 ) -> None:
-    """H = p_r^2/(2M) + p_phi^2/(2 M r^2) + U = p q' - L = T + U (12.36a), (12.37)."""
+    """H = p_r^2/(2M) + p_phi^2/(2 M r^2) + U = p q' - L = T + U (12.36a), (12.37); without a
+    potential (U = 0, free motion) H is the kinetic energy T alone."""
     state = _oscillator_state(orbit)
     if state.r < 1e-3:
         return
@@ -274,6 +326,8 @@ def test_hamiltonian_is_total_energy(
     legendre = f.radial_momentum * state.rdot + f.angular_momentum * state.phidot - (t - u)
     assert _close(h, t + u, t, u)
     assert _close(h, legendre, t, u)
+    free = lagrange.polar_hamiltonian(mass, state.r, f.radial_momentum, f.angular_momentum)
+    assert _close(free, t, t)
 
 
 def test_polar_mechanics_is_the_books_algebra() -> None:
@@ -289,6 +343,10 @@ def test_polar_mechanics_is_the_books_algebra() -> None:
         2,
     )
     assert p.jacobian_determinant_r_power == 1
+    assert (p.metric_phiphi_coefficient, p.inverse_metric_phiphi_coefficient) == (1, 1)
+    assert (p.inverse_metric_rphi, p.inverse_metric_phir) == (0, 0)
+    assert (p.kinetic_angular_rate_power, p.kinetic_angular_r_power) == (2, 2)
+    assert (p.radial_momentum_coefficient, p.angular_momentum_rate_r_power) == (1, 2)
 
 
 # -- exact algebra --------------------------------------------------------------------------------
@@ -319,6 +377,28 @@ def test_laurent_derivative_obeys_leibniz(p: Laurent, q: Laurent) -> None:
         assert p.integrate("x").diff("x") == p
 
 
+@given(_POLYS)
+@example(Laurent.var("x") + Laurent.var("y", 2) / 2)
+def test_laurent_prints_the_polynomial_it_holds(p: Laurent) -> None:
+    """The printed form c*x^i*y^j + ... of a Laurent polynomial, read back by sympy, is the
+    polynomial itself (x^1 printed as x): the coefficients and exponents the chapter 12
+    derivations report can be read off their printout."""
+    import sympy
+
+    x, y = sympy.symbols("x y")
+    want = sum(
+        (
+            sympy.Rational(c.numerator, c.denominator)
+            * x ** dict(k).get("x", 0)
+            * y ** dict(k).get("y", 0)
+            for k, c in p.terms.items()
+        ),
+        sympy.Integer(0),
+    )
+    got = sympy.sympify(repr(p).replace("^", "**"), locals={"x": x, "y": y})
+    assert sympy.expand(got - want) == 0
+
+
 @given(st.integers(0, 4), st.integers(0, 5), st.floats(min_value=-3, max_value=3))
 def test_trig_reduction_keeps_values(i: int, j: int, angle: float) -> None:
     """Rewriting sin^2 = 1 - cos^2 changes the form, not the value, of cos^i sin^j."""
@@ -340,20 +420,66 @@ def test_bohr_phase_factor_is_one(n: int) -> None:
 @settings(max_examples=50)
 @given(
     st.floats(min_value=0.1, max_value=3),
+    st.floats(min_value=-3, max_value=3),
     st.floats(min_value=0, max_value=3),
     st.floats(min_value=0, max_value=6.283),
+    st.floats(min_value=0.2, max_value=5),
+    st.floats(min_value=0.2, max_value=5),
 )
+@example(1.0, 0.0, 1.0, 0.0, 1.0, 1.0)  # the book's scaled units omega = M = 1
 def test_oscillator_loop_action_is_two_pi_energy_over_omega(
-    r0: float, speed: float, angle: float
+    x0: float, y0: float, speed: float, angle: float, omega: float, mass: float
 ) -> None:
-    """Over one period of the 2-D oscillator (omega = M = 1) the reduced action
-    S_H = integral p . dr = integral 2T dt is 2 pi E (virial theorem: mean T = E/2), the loop
-    action Bohr quantizes in (12.45)."""
+    """Over one period 2 pi/omega of the 2-D oscillator U = M omega^2 r^2/2 the reduced action
+    S_H = integral p . dr = integral 2T dt is 2 pi E/omega (virial theorem: mean T = E/2), the
+    loop action Bohr quantizes in (12.45); omega = M = 1 are the defaults. Along the way
+    S_H(t) = integral L dt + E t (12.46) with integral L dt = M (r.v - r0.v0)/2 (as
+    d(r.v)/dt = v^2 - omega^2 r^2), so a quarter period in S_H = E T/4 - M r0.v0."""
     if speed == 0:
         speed = 1e-3
-    paths = lagrange.oscillator_paths((r0, 0.0), speed, [angle], 2 * math.pi, samples=2001)
-    e = (speed**2 + r0**2) / 2
-    assert abs(paths.action[0, -1] - 2 * math.pi * e) <= 1e-5 * (1 + e)
+    period = 2 * math.pi / omega
+    start = (x0, y0)
+    paths = lagrange.oscillator_paths(
+        start, speed, [angle], period, samples=2001, omega=omega, mass=mass
+    )
+    e = mass * (speed**2 + omega**2 * (x0**2 + y0**2)) / 2
+    assert abs(paths.action[0, -1] - 2 * math.pi * e / omega) <= 1e-9 * (1 + e) * period
+    r0_v0 = x0 * speed * math.cos(angle) + y0 * speed * math.sin(angle)
+    quarter = e * period / 4 - mass * r0_v0
+    assert abs(paths.action[0, 500] - quarter) <= 1e-5 * (e * period + mass * abs(r0_v0) + 1e-3)
+    if omega == mass == 1:
+        default = lagrange.oscillator_paths(start, speed, [angle], period, samples=2001)
+        assert (default.action == paths.action).all()
+
+
+@given(
+    st.floats(min_value=-3, max_value=3),
+    st.floats(min_value=-3, max_value=3),
+    st.floats(min_value=0.1, max_value=3),
+    st.floats(min_value=0, max_value=6.283),
+    st.floats(min_value=0.2, max_value=5),
+)
+def test_oscillator_paths_refocus_every_half_period(
+    x0: float, y0: float, speed: float, angle: float, omega: float
+) -> None:
+    """r(t) = r0 cos(omega t) + (v0/omega) sin(omega t) (the starlet blast of exercise 1.12.3,
+    U = M omega^2 r^2/2): every fragment starts at r0, is at v0/omega a quarter period later,
+    at -r0 (the blast refocuses at the antipode) after half a period, and back at r0 after a
+    whole one, whatever its direction."""
+    period = 2 * math.pi / omega
+    angles = [angle, angle + math.pi / 2]
+    paths = lagrange.oscillator_paths((x0, y0), speed, angles, period, samples=5, omega=omega)
+    assert paths.times.tolist() == pytest.approx([k * period / 4 for k in range(5)], rel=REL)
+    scale = abs(x0) + abs(y0) + speed / omega
+    for k, a in enumerate(angles):
+        reach = (speed * math.cos(a) / omega, speed * math.sin(a) / omega)
+        want = [(x0, y0), reach, (-x0, -y0), (-reach[0], -reach[1]), (x0, y0)]
+        for j, (wx, wy) in enumerate(want):
+            assert abs(paths.x[k, j] - wx) <= 1e-12 * scale
+            assert abs(paths.y[k, j] - wy) <= 1e-12 * scale
+    half = lagrange.oscillator_paths((x0, y0), speed, angles, period / 2, samples=2, omega=omega)
+    assert half.x[:, -1] == pytest.approx([-x0, -x0], abs=1e-12 * scale)  # two samples suffice
+    assert half.y[:, -1] == pytest.approx([-y0, -y0], abs=1e-12 * scale)
 
 
 @given(st.floats(min_value=-5, max_value=5), st.floats(min_value=0.1, max_value=5))
@@ -362,6 +488,35 @@ def test_path_action_of_uniform_motion(v: float, duration: float) -> None:
     times = [duration * k / 10 for k in range(11)]
     lag = [v**2 / 2] * 11
     assert _close(lagrange.path_action(lag, times), v**2 * duration / 2)
+    assert _close(lagrange.path_action(lag[:2], [0.0, duration]), v**2 * duration / 2)
+    with pytest.raises(ValueError, match="at least two"):
+        lagrange.path_action(lag[:1], [0.0])
+
+
+@given(st.integers(0, 100), st.integers(1, 32))
+@example(1, 8)  # the first hue step of the book's eight-colour wheel (line 16324)
+@example(3, 1)  # a one-colour palette
+def test_palette_hues_are_roots_of_unity(step: int, colours: int) -> None:
+    """The n hues of a colour circle are the phases 2 pi k/n (12.45), (line 16324): the phase
+    factor of every hue raised to the n-th power is 1, and n steps on make one whole turn."""
+    phase = lagrange.palette_phase(step, colours)
+    turn = lagrange.palette_phase(step + colours, colours) - phase
+    assert abs(turn - 2 * math.pi) <= 1e-12 * (1 + abs(phase))
+    z = lagrange.phase_factor(phase)
+    assert abs(z**colours - 1) <= 1e-12 * colours * (1 + abs(phase))
+    assert abs(lagrange.palette_amplitude(step, colours) - z.real) <= 1e-15
+
+
+@given(
+    st.floats(min_value=0.01, max_value=100),
+    st.lists(st.floats(min_value=-7, max_value=7), min_size=1, max_size=6),
+)
+def test_common_speed_is_the_speed_of_every_fragment(speed: float, angles: list[float]) -> None:
+    """Fragments flying off with one speed in any directions (exercise 1.12.3) share that speed:
+    common_speed returns it, exactly when every |v| is the same float (3-4-5 triangles)."""
+    velocities = [(speed * math.cos(a), speed * math.sin(a)) for a in angles]
+    assert _close(lagrange.common_speed(velocities), speed)
+    assert lagrange.common_speed([(3, 4), (-4, 3), (0, 5), (5, 0)]) == 5
 
 
 def test_common_speed_rejects_different_speeds() -> None:

@@ -10,42 +10,76 @@ import math
 from fractions import Fraction
 
 import pytest
-from hypothesis import example, given, target
+from hypothesis import assume, example, given, target
 from hypothesis import strategies as st
 
 from checks.properties.strategies import (
+    fraction_lengths,
     fraction_masses,
     fraction_velocities,
     masses,
     mirror_angles,
+    moderate_fraction_masses,
+    rational_half_angle_tans,
+    small_fractions,
     square_roots,
     velocities,
 )
-from mechmodel.collisions import collide
+from mechmodel.bangs import ceiling_sequence
+from mechmodel.collisions import collide, momentum_line_slope
 from mechmodel.operators import (
+    angle_between_mirrors,
     apply,
     bang_angle,
+    bang_facet_slope,
+    bang_line_angle,
+    bang_line_slope,
     ceiling_matrix,
+    clock_energy_share,
+    collision_line_angle,
     collision_matrix,
+    collision_matrix_coefficients,
     determinant,
     double_bang_matrix,
+    double_bang_rotation_angle,
+    energy_line_inclination,
     floor_matrix,
+    hypotenuse,
+    imaginary_unit_square,
     integral_right_triangle,
     mass_scaled,
+    mass_scaled_form,
+    matrix_power,
     matrix_product,
     mirror_angle,
+    mirror_angle_ratio,
     mirror_pair_rotation,
+    mirror_pair_translation,
+    multiple_bang_angle,
     negated,
+    pauli_common_square,
     pauli_square,
+    perfect_square,
+    quaternion_common_square,
     quaternion_square,
+    quaternion_unit,
     reflection,
+    rms_speed_ratio,
     rotation,
     rotation_angle,
+    rotation_picture_bang_count,
+    scalar_of_identity,
+    scaled_bang_coefficient,
     scaled_collision_matrix,
     scaled_double_bang_matrix,
+    sigma,
     sigma_a,
     sigma_b,
+    sigma_mirror_angle,
+    sigma_mirror_separation,
     sigma_product,
+    sigma_rotation_angle,
+    square_scalar,
 )
 
 pytestmark = pytest.mark.properties
@@ -76,7 +110,24 @@ def test_the_collision_matrix_is_an_involution_with_determinant_minus_one(
     velocities), and det M = -1: in any velocities it is a reflection (p. 5.18)."""
     m = collision_matrix(m1, m2)
     assert matrix_product(m, m) == UNIT
+    assert matrix_power(m, 2) == matrix_power(m, 0) == UNIT
     assert determinant(m) == -1
+
+
+@given(fraction_masses(), fraction_masses())
+@example(Fraction(49), Fraction(1))  # Fig. 5.1
+def test_the_bang_matrix_times_the_total_mass_is_linear_in_the_masses(
+    m1: Fraction, m2: Fraction
+) -> None:
+    """(m1 + m2) M = ((m1 - m2, 2 m2), (2 m1, m2 - m1)) (5.1a)-(5.1b): every entry is
+    a m1 + b m2 with the integer coefficients read off at two mass pairs, at any masses."""
+    m = collision_matrix(m1, m2)
+    entries = collision_matrix_coefficients().entries
+    assert [[(a, b) for a, b in row] for row in entries] == [[(1, -1), (0, 2)], [(2, 0), (-1, 1)]]
+    for i in range(2):
+        for j in range(2):
+            a, b = entries[i][j]
+            assert (m1 + m2) * m[i][j] == a * m1 + b * m2
 
 
 @given(fraction_masses(), fraction_masses(), fraction_velocities(), fraction_velocities())
@@ -92,6 +143,9 @@ def test_ceiling_times_collision_has_determinant_plus_one(m1: Fraction, m2: Frac
     """The double bang C M of (5.3) has det(C M) = det C det M = (-1)(-1) = +1: a rotation,
     not a reflection (p. 5.18); C and F are sigma_A and -sigma_A (5.15a)-(5.15b)."""
     assert determinant(double_bang_matrix(m1, m2)) == 1
+    once = matrix_product(ceiling_matrix(), collision_matrix(m1, m2))
+    assert double_bang_matrix(m1, m2) == double_bang_matrix(m1, m2, 1) == once
+    assert double_bang_matrix(m1, m2, 2) == matrix_product(once, once)
     assert ceiling_matrix() == sigma_a()
     assert floor_matrix() == negated(sigma_a())
 
@@ -111,6 +165,12 @@ def test_ceiling_times_collision_rotates_by_the_bang_angle(m1: float, m2: float)
     target(worst(double, rotation(-angle.angle)), label="rotation error")
     assert close(double, rotation(-angle.angle))
     assert abs(determinant(double) - 1) <= 4 * REL
+    assert abs(c - (m1 - m2) / (m1 + m2)) <= 4 * REL
+    expected_sin = scaled_bang_coefficient() * math.sqrt(m1 * m2) / (m1 + m2)
+    assert math.isclose(s, expected_sin, rel_tol=8 * REL)
+    turn = double_bang_rotation_angle(m1, m2)
+    assert turn == double_bang_rotation_angle(m1, m2, 1)
+    assert abs(turn + angle.angle) <= 4 * REL
 
 
 @given(masses(), masses(), st.integers(min_value=0, max_value=12))
@@ -120,6 +180,45 @@ def test_n_double_bangs_rotate_by_n_bang_angles(m1: float, m2: float, n: int) ->
     angles."""
     theta = bang_angle(m1, m2).angle
     assert close(scaled_double_bang_matrix(m1, m2, n), rotation(-n * theta), scale=n)
+    assert multiple_bang_angle(m1, m2, n) == n * theta
+    turn = double_bang_rotation_angle(m1, m2, n)
+    assert -math.pi <= turn <= math.pi
+    assert abs(math.remainder(turn + n * theta, 2 * math.pi)) <= 1e-11 * (n + 1)
+
+
+@given(fraction_masses(), fraction_masses(), st.integers(min_value=1, max_value=12))
+@example(Fraction(49), Fraction(1), 5)  # (5.13b) at N = 5
+@example(Fraction(1), Fraction(1), 2)  # theta = 90 degrees: sin(2 theta) = 0
+def test_n_double_bangs_in_velocities_have_the_mass_scaled_form(
+    m1: Fraction, m2: Fraction, n: int
+) -> None:
+    """In velocities v, (C M)^N = ((cos, a sin), (b sin, cos)) of the angle N theta with
+    a = sqrt(m2/m1) and b = -sqrt(m1/m2), so a b = -1 (5.13b): the rotation of (5.13a) seen
+    through the mass scaling S (5.7). Where sin(N theta) = 0 there is no such form."""
+    v = double_bang_matrix(m1, m2, n)
+    assert v[0][0] == v[1][1]
+    if v[0][1] == 0:
+        with pytest.raises(ValueError, match="sin"):
+            mass_scaled_form(m1, m2, n)
+        return
+    form = mass_scaled_form(m1, m2, n)
+    theta = bang_angle(m1, m2).angle
+    assert math.isclose(form.upper, math.sqrt(m2 / m1), rel_tol=8 * REL)
+    assert math.isclose(form.lower, -math.sqrt(m1 / m2), rel_tol=8 * REL)
+    assert abs(form.cos - math.cos(n * theta)) <= 1e-11 * n
+    assert abs(form.sin - math.sin(n * theta)) <= 1e-11 * n
+    assert mass_scaled_form(m1, m2) == mass_scaled_form(m1, m2, 1)
+
+
+@given(moderate_fraction_masses(), moderate_fraction_masses())
+@example(Fraction(49), Fraction(1))  # Fig. 5.1: 21 bangs after the floor bounce
+def test_the_rotation_picture_counts_the_bangs_of_the_sequence(m1: Fraction, m2: Fraction) -> None:
+    """From the floor bounce (v0, -v0), at angle -theta/2 in V space, each double bang turns
+    the state by -theta (5.12); the bangs stop at the least n with (n + 2) theta/2 >= pi: the
+    count of the exact bang sequence of (5.4) (21 for the 49:1 pair of Fig. 5.1)."""
+    ratio = 2 * math.pi / bang_angle(m1, m2).angle
+    assume(abs(ratio - round(ratio)) > 1e-9)  # exact ties (1:1, 3:1) are decided by rounding
+    assert rotation_picture_bang_count(m1, m2) == ceiling_sequence(m1, m2, 1, -1).count
 
 
 @given(masses(), masses(), velocities(), velocities())
@@ -152,6 +251,8 @@ def test_a_reflection_squares_to_one_and_has_determinant_minus_one(phi: float) -
     assert close(matrix_product(s, s), UNIT)
     assert abs(determinant(s) + 1) <= REL
     assert abs(mirror_angle(s) - phi / 2) <= REL
+    if abs(phi) >= 1e-300:  # phi/2 of a subnormal phi has no relative precision
+        assert math.isclose(mirror_angle_ratio(phi), 2, rel_tol=4 * REL)
 
 
 @given(mirror_angles(), mirror_angles())
@@ -163,6 +264,24 @@ def test_two_reflections_make_a_rotation_by_twice_the_mirror_angle(a: float, b: 
     assert close(product, rotation(2 * (b - a)))
     turn = mirror_pair_rotation(a, b)
     assert abs(math.remainder(turn - 2 * (b - a), 2 * math.pi)) <= 1e-11
+    between = angle_between_mirrors(reflection(2 * a), reflection(2 * b))
+    assert -math.pi / 2 < between <= math.pi / 2
+    assert abs(math.remainder(between - (b - a), math.pi)) <= 1e-11
+
+
+@given(fraction_velocities(), fraction_velocities(), fraction_velocities())
+@example(Fraction(0), Fraction(1), Fraction(5))
+def test_two_parallel_mirrors_translate_by_twice_their_separation(
+    p1: Fraction, d: Fraction, x: Fraction
+) -> None:
+    """Reflecting x -> 2 p1 - x and then x -> 2 p2 - x moves every x by 2 (p2 - p1): two
+    parallel mirrors make a translation by twice their separation (line 5091), as two crossed
+    mirrors make a rotation by twice their angle (Fig. 5.4)."""
+    p2 = p1 + (d if d != 0 else Fraction(1))
+    t = mirror_pair_translation(p1, p2)
+    assert t.separation == p2 - p1
+    assert 2 * p2 - (2 * p1 - x) == x + t.translation
+    assert t.ratio == 2
 
 
 @given(mirror_angles(), mirror_angles())
@@ -185,15 +304,119 @@ def test_pauli_and_quaternion_algebra() -> None:
     assert [quaternion_square(u) for u in "ijk"] == [-1, -1, -1]
     assert rotation_angle(matrix_product(sigma_b(), sigma_a())) == pytest.approx(math.pi / 2)
     assert rotation_angle(matrix_product(sigma_a(), sigma_b())) == pytest.approx(-math.pi / 2)
+    assert sigma_rotation_angle("B", "A") == pytest.approx(math.pi / 2)
+    assert quaternion_common_square() == imaginary_unit_square() == -1
+    assert pauli_common_square() == 1
+    i, j, k = (quaternion_unit(u) for u in "ijk")  # Hamilton: i j = k, j k = i, k i = j
+    assert (matrix_product(i, j), matrix_product(j, k), matrix_product(k, i)) == (k, i, j)
+    assert matrix_product(j, i) == negated(k)
+    assert sigma("0") == UNIT
+    for name in ("A", "B", "C", "0"):
+        assert sigma("-" + name) == negated(sigma(name))
+        assert sigma_product("0", name) == sigma(name) == sigma_product(name, "0")
+    assert sigma_mirror_angle("A") == 0
+    assert sigma_mirror_angle("B") == pytest.approx(math.pi / 4)
+    assert sigma_mirror_angle("-A") == pytest.approx(math.pi / 2)
+    for first, second in (("A", "-A"), ("-A", "A")):  # mirrors at 0 and 90 degrees
+        assert sigma_mirror_separation(first, second) == pytest.approx(math.pi / 2)
+
+
+@given(small_fractions(), small_fractions(), small_fractions(), masses())
+@example(Fraction(1), Fraction(1, 4), Fraction(-1), 1e6)
+def test_a_traceless_matrix_squares_to_minus_its_determinant(
+    a: Fraction, b: Fraction, c: Fraction, r: float
+) -> None:
+    """Cayley-Hamilton: A^2 = (tr A) A - det A, so a matrix of trace zero squares to the number
+    -det A (sigma_A and sigma_B to +1, Hamilton's units to -1 (5.15)), r R(90 degrees)
+    to -r^2 up to rounding (1e-12 of the size), while a shear ((1, b), (0, 1)), b != 0,
+    squares to no number."""
+    m = ((a, b), (c, -a))
+    assert square_scalar(m) == scalar_of_identity(matrix_product(m, m)) == -determinant(m)
+    quarter = tuple(tuple(r * x for x in row) for row in rotation(math.pi / 2))
+    assert math.isclose(square_scalar(quarter), -r * r, rel_tol=4 * REL)
+    assert scalar_of_identity(((r, 0.99e-12 * r), (0.0, r))) == r  # rounding: 1e-12 of the size
+    with pytest.raises(ValueError, match="unit matrix"):
+        scalar_of_identity(((r, 1.005e-12 * r), (0.0, r)))
+    if b != 0:
+        with pytest.raises(ValueError, match="unit matrix"):
+            square_scalar(((1, b), (0, 1)))
+
+
+ROUNDING = Fraction(1e-9)  # how far a determinant may be off +1 or -1 by rounding
+
+
+@given(rational_half_angle_tans(), st.integers(min_value=-600, max_value=600))
+@example(Fraction(1, 2), 200)  # a determinant exactly 1e-9 off: rounding
+@example(Fraction(1, 2), -200)
+@example(Fraction(1, 2), 201)  # 1.005e-9 off: no longer
+@example(Fraction(1, 2), -201)
+def test_a_determinant_off_by_more_than_rounding_is_no_rotation_or_reflection(
+    t: Fraction, k: int
+) -> None:
+    """det R = +1 for a rotation (5.17a) and -1 for a reflection (5.15c), p. 5.18:
+    stretching one row by 1 + delta makes the determinant 1 + delta, still a rotation (or
+    reflection) within rounding, |delta| <= 1e-9, and neither beyond it."""
+    cos, sin = (1 - t * t) / (1 + t * t), 2 * t / (1 + t * t)  # a rational point of the circle
+    stretch = 1 + ROUNDING * k / 200
+    turned = ((stretch * cos, -stretch * sin), (sin, cos))
+    mirrored = ((stretch * cos, stretch * sin), (sin, -cos))
+    assert determinant(turned) == stretch == -determinant(mirrored)
+    if abs(k) <= 200:
+        assert abs(rotation_angle(turned) - math.atan2(sin, cos)) <= 1e-8
+        assert abs(mirror_angle(mirrored) - math.atan2(sin, cos) / 2) <= 1e-8
+    else:
+        with pytest.raises(ValueError, match="rotation"):
+            rotation_angle(turned)
+        with pytest.raises(ValueError, match="reflection"):
+            mirror_angle(mirrored)
 
 
 @given(square_roots(), square_roots())
 @example(7, 1)  # (a, b, c) = (14, 48, 50)
 @example(3, 2)  # (12, 5, 13)
+@example(1, 2)  # the masses 1 and 4: (4, 3, 5)
 def test_perfect_square_masses_give_integral_right_triangles(k1: int, k2: int) -> None:
     """For perfect-square masses m1 = k1^2, m2 = k2^2 the bang triangle has integer sides
-    altitude 2 sqrt(m1 m2), base m1 - m2 and hypotenuse m1 + m2, with a^2 + b^2 = c^2
-    (Fig. 5.2(f))."""
-    t = integral_right_triangle(k1 * k1, k2 * k2)
+    altitude 2 sqrt(m1 m2) = 2 k1 k2 = sqrt(4 m1 m2), base m1 - m2 and hypotenuse m1 + m2,
+    with a^2 + b^2 = c^2 (Fig. 5.2(f))."""
+    m1, m2 = perfect_square(k1), perfect_square(k2)
+    assert (m1, m2) == (k1 * k1, k2 * k2)
+    t = integral_right_triangle(m1, m2)
     assert all(isinstance(x, int) for x in (t.altitude, t.base, t.hypotenuse))
+    assert t.altitude == 2 * k1 * k2
     assert t.altitude**2 + t.base**2 == t.hypotenuse**2
+    assert t.altitude_coefficient == 4
+    if k1 != k2:
+        c = hypotenuse(t.altitude, abs(t.base))
+        assert c == t.hypotenuse
+        assert isinstance(c, int)
+        assert hypotenuse(float(t.altitude), float(abs(t.base))) == pytest.approx(c, rel=REL)
+
+
+# -- lines of the velocity plots and the clock's statistics -----------------------------------
+
+
+@given(fraction_masses(), fraction_masses(), fraction_lengths())
+@example(Fraction(1), Fraction(1), Fraction(1, 2))  # equal masses: the -45 degree bang line
+def test_the_bang_line_is_the_momentum_line(m1: Fraction, m2: Fraction, energy: Fraction) -> None:
+    """A bang moves (v1, v2) along the momentum line of slope -m1/m2 (Figs. 3.1, 4.4b, 4.12),
+    normal to a mirror facet of slope m2/m1; the collision line v2 = v1 is at 45 degrees, and
+    so is the energy line V1^2 + V2^2 = 2 KE of Fig. 5.2(e), whatever the energy."""
+    slope = bang_line_slope(m1, m2)
+    assert slope == momentum_line_slope(m1, m2) == -m1 / m2
+    assert bang_facet_slope(m1, m2) * slope == -1
+    assert bang_line_angle(m1, m2) == pytest.approx(math.atan(-m1 / m2), rel=REL)
+    assert collision_line_angle() == pytest.approx(math.pi / 4, rel=REL)
+    assert energy_line_inclination(energy) == pytest.approx(math.pi / 4, rel=REL)
+
+
+@given(masses(), masses(), st.integers(min_value=3, max_value=200))
+@example(49.0, 1.0, 3)
+def test_the_bang_clock_shares_the_energy_equally(m1: float, m2: float, ticks: int) -> None:
+    """Clock hands spread evenly round the energy circle of Fig. 5.2(b) give each ball half
+    the energy on average, for any number of ticks; so the mean squares of the velocities are
+    in the inverse ratio of the masses, v2_rms / v1_rms = sqrt(m1/m2) (5.14)."""
+    assert abs(clock_energy_share(ticks) - 0.5) <= 1e-12
+    ratio = rms_speed_ratio(m1, m2)
+    assert math.isclose(ratio * ratio, m1 / m2, rel_tol=4 * REL)
+    assert math.isclose(ratio * rms_speed_ratio(m2, m1), 1, rel_tol=4 * REL)

@@ -65,18 +65,33 @@ def test_energy_is_constant_on_the_orbit(a: float, b: float, w: float, u: float)
     assert close(value, expected, expected, TRIG)
 
 
-@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases(), orbit_phases())
-@example(2.2, 1.0, 1.0, 0.0, math.pi / 3)  # the snapshots t = 0 and pi/3w of Fig. 11.8
-def test_equal_areas_in_equal_times(a: float, b: float, w: float, u0: float, u1: float) -> None:
+@given(
+    orbit_radii(),
+    orbit_radii(),
+    orbit_omegas(),
+    orbit_phases(),
+    orbit_phases(),
+    st.integers(min_value=0, max_value=3),
+)
+@example(2.2, 1.0, 1.0, 0.0, math.pi / 3, 0)  # the snapshots t = 0 and pi/3w of Fig. 11.8
+def test_equal_areas_in_equal_times(
+    a: float, b: float, w: float, u0: float, u1: float, turns: int
+) -> None:
     """The radius sweeps the same area in any two equal time intervals, the areal velocity
     times the interval (Kepler's law, Fig. 11.8): the sectors are measured geometrically, from
-    the end points' clock hands (Fig. 11.1), not from the time."""
-    dt = 0.37 * osc.orbit_period(w)
+    the end points' clock hands (Fig. 11.1), not from the time; each whole period adds the
+    ellipse's area pi a b, and no time sweeps no area."""
+    period = osc.orbit_period(w)
+    dt = (turns + 0.37) * period
     first = osc.swept_area(a, b, w, u0 / w, u0 / w + dt)
     second = osc.swept_area(a, b, w, u1 / w, u1 / w + dt)
     rate = osc.areal_velocity(a, b, w) * dt
     assert close(first, second, rate, TRIG)
     assert close(first, rate, rate, TRIG)
+    assert close(osc.orbit_area(a, b), math.pi * a * b, a * b)
+    assert osc.swept_area(a, b, w, u0 / w, u0 / w) == 0
+    with pytest.raises(ValueError, match="precede"):
+        osc.swept_area(a, b, w, u0 / w, u0 / w - 0.1 * period)
 
 
 @given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases())
@@ -130,6 +145,7 @@ def test_derivatives_follow_the_orbit_a_quarter_turn_apart(
     ahead = osc.orbit_position(a, b, w, t + advance / w)
     for c, d in zip(scaled, ahead, strict=True):
         assert close(c, d, a + b, TRIG)
+    assert osc.orbit_derivative(a, b, w, t) == osc.orbit_position(a, b, w, t)  # order 0: r
 
 
 @given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_fractions())
@@ -151,6 +167,12 @@ def test_power_is_the_rate_of_kinetic_energy(a: float, b: float, w: float, turns
     angle = osc.force_velocity_angle(a, b, w, turns)
     if abs(power) > 1e-9 * scale:
         assert (angle < math.pi / 2) == (power > 0)
+    # P = |F| |V| cos(theta), F = -m w^2 r; theta = 90 degrees at apogee and perigee
+    r, v = osc.orbit_position(a, b, w, t), osc.orbit_velocity(a, b, w, t)
+    magnitudes = mass * w * w * math.hypot(*r) * math.hypot(*v)
+    assert close(magnitudes * math.cos(angle), power, magnitudes, TRIG)
+    for apsis in (0, 0.25, 0.5, 0.75):
+        assert close(osc.force_velocity_angle(a, b, w, apsis), math.pi / 2, 1.0, TRIG)
 
 
 # --- centrifugal and tidal forces (11.2)-(11.3), p. 171 --------------------------------------
@@ -175,11 +197,29 @@ def test_spring_constant_inverts_the_frequency(k: Fraction, m: Fraction) -> None
     assert osc.spring_constant(m, w) == k * k * m
 
 
-@given(orbit_omegas())
-def test_neighbouring_orbits_cross_twice_a_period(f: float) -> None:
+@given(orbit_omegas(), st.integers(min_value=8, max_value=500))
+@example(1.0, 8)  # the fewest samples allowed
+def test_neighbouring_orbits_cross_twice_a_period(f: float, samples: int) -> None:
     """Two free-fall orbits a little apart cross twice each period (p. 171: 2000 times a
-    second at 1 kHz), whatever the frequency."""
+    second at 1 kHz), whatever the frequency, and however finely the separation
+    d0 cos(wt + alpha) is sampled."""
     assert osc.tidal_crossings_per_second(f) == 2 * f
+    assert osc.crossings_per_period(samples) == 2
+    with pytest.raises(ValueError, match="at least 8"):
+        osc.crossings_per_period(7)
+
+
+@given(exact_radii(), exact_radii(), exact_radii(), exact_radii())
+def test_linear_force_grows_in_proportion_to_the_offset(
+    m: Fraction, w: Fraction, x: Fraction, x_new: Fraction
+) -> None:
+    """The centrifugal (tidal) force m w^2 r = k r (11.3a), k = m w^2 (11.2b), is linear in the
+    offset: restated at another offset it is the old force times the ratio of offsets (p. 171's
+    fingertip a centimetre off centre), exactly."""
+    force = osc.centrifugal_force(m, w, x)
+    assert force == osc.spring_constant(m, w) * x
+    assert osc.hooke_force_at(force, x, x_new) == osc.centrifugal_force(m, w, x_new)
+    assert osc.hooke_force_at(force, x, -x_new) == -osc.centrifugal_force(m, w, x_new)
 
 
 # --- quadratic forms (11.7)-(11.20), exercise 1.11.1 -----------------------------------------
@@ -204,6 +244,7 @@ def test_dual_ellipse_radii_are_inverse(a: Fraction, b: Fraction) -> None:
     eigenvectors of Q with eigenvalues 1/a^2 and 1/b^2 (11.15c,d)."""
     dual = osc.dual_ellipse(a, b)
     assert (dual.radius_x, dual.radius_y) == (1 / a, 1 / b)
+    assert (dual.radius_x_times_a, dual.radius_y_times_b) == (1, 1)
     eigen = osc.axis_eigenvalues(a, b, 2)
     assert (eigen.a_axis, eigen.b_axis) == (1 / a**2, 1 / b**2)
 
@@ -217,6 +258,11 @@ def test_powers_of_r_multiply_slopes_by_powers_of_a_over_b(
     assert osc.slope_gain(a, b, power) == (a / b) ** power
     eigen = osc.axis_eigenvalues(a, b, power)
     assert (eigen.a_axis, eigen.b_axis) == (a**-power, b**-power)
+    assert (eigen.a_axis_scaled, eigen.b_axis_scaled) == (1, 1)
+    # whole-number radii give the same exact operator as the equal Fractions
+    n, m = a.numerator, b.numerator
+    assert osc.slope_operator(n, m) == osc.slope_operator(Fraction(n), Fraction(m))
+    assert osc.slope_gain(n, m, power) == Fraction(n, m) ** power
     if a != b:
         assert osc.slope_gain_exponent(a, b, power) == power
 
@@ -258,6 +304,33 @@ def test_rotated_form_keeps_its_eigenvalues(a: float, b: float, angle: float) ->
     assert close(radii[1], max(a, b), a + b, 1e-6)
 
 
+@given(
+    orbit_radii(),
+    st.floats(min_value=1.2, max_value=5),
+    st.booleans(),
+    form_angles(),
+)
+@example(1.0, 2.0, True, math.pi / 4)
+def test_rotated_ellipse_is_read_back_turned(
+    a: float, factor: float, wider: bool, angle: float
+) -> None:
+    """The ellipse of radii a (along x) and b turned by an angle has its a-axis along that
+    angle (exercise 1.11.1(a)): ellipse_from_form finds the direction of the larger eigenvalue
+    (the shorter radius) and major_axis_angle the longer radius, both modulo pi."""
+    b = a * factor if wider else a / factor
+    form = osc.rotated_form(a, b, angle)
+    ellipse = osc.ellipse_from_form(form.A, form.B, form.C)
+    short_along = angle if a < b else angle + math.pi / 2
+    long_along = angle if a > b else angle + math.pi / 2
+    assert abs(math.sin(ellipse.angle - short_along)) <= TRIG
+    assert close(ellipse.radius, min(a, b), a + b, TRIG)
+    assert (
+        abs(math.sin(osc.major_axis_angle(((form.A, form.B), (form.B, form.C))) - long_along))
+        <= TRIG
+    )
+    assert 0 <= osc.major_axis_angle(((form.A, form.B), (form.B, form.C))) < math.pi
+
+
 @given(exact_radii(), exact_radii(), rational_half_angle_tans())
 def test_form_expands_to_a_x2_plus_2b_xy_plus_c_y2(a: Fraction, b: Fraction, s: Fraction) -> None:
     """(x y).(A B; B C).(x y) = A x^2 + 2B xy + C y^2 (11.20), exactly."""
@@ -273,9 +346,22 @@ def test_form_expands_to_a_x2_plus_2b_xy_plus_c_y2(a: Fraction, b: Fraction, s: 
 @given(exact_radii(), exact_radii())
 def test_opposite_eigenvalues_give_a_hyperbola(a: Fraction, b: Fraction) -> None:
     """Eigenvalues 1/a^2 and -1/b^2 make r.Q.r = 1 a hyperbola (exercise 1.11.1(c)); two
-    positive ones an ellipse."""
+    positive ones an ellipse; (a x + b y)^2 = 1, the form (a^2 ab; ab b^2) with eigenvalues
+    a^2 + b^2 and 0, is a pair of parallel lines (no ellipse radii), and two negative
+    eigenvalues leave no real points (11.20)."""
     assert osc.conic_type(1 / a**2, 0, -1 / b**2) == "hyperbola"
     assert osc.conic_type(1 / a**2, 0, 1 / b**2) == "ellipse"
+    assert osc.form_eigenvalues(a * a, a * b, b * b) == (a * a + b * b, 0)
+    assert osc.conic_type(a * a, a * b, b * b) == "parallel lines"
+    with pytest.raises(ValueError, match="parallel lines"):
+        osc.ellipse_from_form(a * a, a * b, b * b)
+    assert osc.conic_type(-1 / a**2, 0, -1 / b**2) == "empty"
+    assert osc.conic_type(0, 0, -1 / b**2) == "empty"  # -y^2/b^2 = 1
+    assert osc.conic_type(0, 0, 0) == "empty"
+    # a circle: equal eigenvalues, radius a along the x axis
+    assert osc.form_eigenvalues(1 / a**2, 0, 1 / a**2) == (1 / a**2, 1 / a**2)
+    circle = osc.ellipse_from_form(1 / a**2, 0, 1 / a**2)
+    assert (circle.radius, circle.other_radius, circle.angle) == (a, a, 0.0)
 
 
 # --- triads (11.16)-(11.19), Fig. 11.7 --------------------------------------------------------
@@ -306,6 +392,14 @@ def test_triad_radius_and_perpendicular_are_dual(
     assert close(osc.dot(v.p, v.r), 1.0, 1.0, TRIG)
     phi_next = osc.triad_angle(a, b, phi0, k + 1)
     assert close(math.atan2(v.p[1], v.p[0]), phi_next, 1.0, TRIG)
+    assert osc.triad_vectors(a, a * b, phi0) == osc.triad_vectors(a, a * b, phi0, 0)
+    # with ab = 1 (11.18): r = (a/dx, b/dy) and p = (b/dx, a/dy) share their divisors
+    unit = osc.triad_vectors(a, 1, phi0, k)
+    bu = 1 / a
+    assert close(a / unit.r_x_divisor, unit.r[0], abs(unit.r[0]), TRIG)
+    assert close(bu / unit.r_y_divisor, unit.r[1], abs(unit.r[1]), TRIG)
+    assert close(unit.p_x_divisor, unit.r_x_divisor, abs(unit.r_x_divisor), TRIG)
+    assert close(unit.p_y_divisor, unit.r_y_divisor, abs(unit.r_y_divisor), TRIG)
 
 
 @given(

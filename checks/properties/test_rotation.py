@@ -58,6 +58,14 @@ def test_rod_inertia_is_the_limit_of_slices(rho: Fraction, length: Fraction, n: 
     assert integral - midpoint_sum == rho * length**3 / (12 * n * n)
 
 
+def test_rod_inertia_form_reads_the_book_formula() -> None:
+    """The coefficients and exponents read off the integral are those of (11.25):
+    I = rho l^3/3 = M l^2/3 for a uniform rod about one end."""
+    form = rotation.rod_inertia_form()
+    assert (form.density_coefficient, form.density_length_power) == (Fraction(1, 3), 3)
+    assert (form.mass_coefficient, form.mass_length_power) == (Fraction(1, 3), 2)
+
+
 @given(exact_radii(), exact_radii())
 def test_free_rod_inertia_is_m_l_squared_over_twelve(mass: Fraction, half: Fraction) -> None:
     """Two rods of length l welded end to end turn about the weld with I = M l^2/3, the
@@ -78,7 +86,9 @@ def test_the_percussion_point_is_at_rest(
     assert rotation.free_rod_inertia(mass, half) * response.angular_velocity == impulse * h
     assert response.cm_velocity - response.angular_velocity * response.percussion_radius == 0
     assert response.hit_percussion_product == half * half / 3
+    assert response.product_coefficient == Fraction(1, 3)  # h p / l^2, whatever l and h
     assert rotation.percussion_divisor(half, h) == 3 * hit
+    assert rotation.percussion_fraction(half, 1 / hit) == 1 / (3 * hit)  # p/l = l/(3h)
 
 
 @given(exact_radii())
@@ -120,5 +130,6 @@ def test_rod_points_roll_on_the_percussion_tire(
     distance = math.hypot(x - centre_x, y + p)  # from the contact point (centre_x, -p)
     assert abs(math.hypot(*v) - w * distance) <= 1e-5 * w * (distance + p)
     assert rotation.cycloid_kind(-p, p) == "normal"
+    assert rotation.cycloid_kind(0, p) == "line"
     assert rotation.cycloid_kind(p / 2, p) == "prolate"
     assert rotation.cycloid_kind(2 * p, p) == "curlate"

@@ -7,6 +7,7 @@ working precision.
 
 from __future__ import annotations
 
+import cmath
 import math
 from fractions import Fraction
 
@@ -20,6 +21,7 @@ from checks.properties.strategies import (
     compounding_periods,
     phase_angles,
     plane_points,
+    rationals,
     series_arguments,
     series_orders,
 )
@@ -45,15 +47,22 @@ def _mp(value: Fraction) -> mpmath.mpf:
 @example(1.0, 8)  # the nine terms of (10.6)
 def test_exp_partial_sum_lies_within_its_taylor_remainder_bound(x: float, order: int) -> None:
     """|e^x - S_o(x)| <= |x|^(o+1)/(o+1)! e^max(x, 0) (Lagrange's remainder of (10.5)); for
-    x > 0 every omitted term is positive, so the next term alone is never a bound."""
+    x > 0 every omitted term is positive, so the next term alone is never a bound; for
+    -(o + 2) < x < 0 the omitted terms alternate and shrink, and the bound is nearly attained."""
     error = abs(series.exp_partial_sum(x, order) - math.exp(x))
     bound = float(series.exp_remainder_bound(x, order))
     assert error <= bound * (1 + REL) + REL * _exp_scale(x)
-    if x >= 0.01:
-        exact = Fraction(x)
-        with mpmath.workdps(200):  # the error can be as small as 1e-96: work far below it
-            gap = mpmath.exp(_mp(exact)) - _mp(series.exp_partial_sum(exact, order, exact=True))
-            assert gap >= _mp(series.exp_series_term(exact, order + 1, exact=True))
+    exact = Fraction(x)
+    with mpmath.workdps(200):  # the error can be as small as 1e-96: work far below it
+        gap = mpmath.exp(_mp(exact)) - _mp(series.exp_partial_sum(exact, order, exact=True))
+        following = _mp(series.exp_series_term(exact, order + 1, exact=True))
+        if x >= 0.01:
+            assert gap >= following
+        elif x <= -0.01 and -x < order + 2:
+            # alternating terms that shrink by |x|/(k+1): the first omitted term nearly is
+            # the error, and it is the bound
+            assert abs(gap) >= abs(following) * (1 - abs(exact) / (order + 2))
+            assert abs(gap) >= _mp(Fraction(bound)) * (1 - abs(exact) / (order + 2)) * (1 - REL)
 
 
 @given(st.integers(min_value=1, max_value=20))
@@ -71,15 +80,70 @@ def test_binomial_limit_gives_the_e_series_and_its_derivative(k: int) -> None:
     assert (term.r_power, term.t_power) == (k, k - 1)
 
 
+@given(rationals(Fraction(1, 2), 3, 8), st.booleans(), st.integers(min_value=0, max_value=12))
+@example(Fraction(1), True, 8)  # nine terms give 5-figure accuracy (10.6)
+def test_the_e_series_is_correct_to_its_counted_decimals(
+    size: Fraction, positive: bool, order: int
+) -> None:
+    """The order-o partial sum of (10.5) has o + 1 terms and takes o additions (10.6); it is
+    correct to d decimals: its error is below half a unit of the d-th decimal and not below
+    half a unit of the next (d = 0 when even the units are off)."""
+    x = size if positive else -size
+    d = series.exp_series_correct_decimals(x, order)
+    with mpmath.workdps(2 * series.DIGITS):
+        partial = _mp(series.exp_partial_sum(x, order, exact=True))
+        error = abs(partial - mpmath.exp(_mp(x)))
+        half_unit = mpmath.mpf(10) ** -d / 2
+        assert error < half_unit or d == 0  # an error of 1/2 or more: no decimal is right
+        assert half_unit <= 10 * error
+    assert series.exp_series_term_count(order) == order + 1
+    assert series.exp_series_additions(order) == order
+
+
+@given(rationals(-20, 20, 12), rationals(-20, 20, 12))
+def test_the_exponential_turns_sums_into_products(a: Fraction, b: Fraction) -> None:
+    """e^(a + b) = e^a e^b, the growth law of e^x (10.1); e^(k pi) (the e^(-pi) after
+    (10.20)) is e^x at x = k pi."""
+    with mpmath.workdps(series.DIGITS):
+        both = series.exponential(a + b)
+        assert abs(both - series.exponential(a) * series.exponential(b)) <= both * 1e-35
+        power = series.exp_pi_multiple(a)
+        assert abs(power - mpmath.exp(_mp(a) * mpmath.pi)) <= power * 1e-35
+        assert abs(power * series.exp_pi_multiple(b) - series.exp_pi_multiple(a + b)) <= (
+            series.exp_pi_multiple(a + b) * 1e-35
+        )
+
+
+@given(st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k))
+@example(1e-3)
+def test_the_log_potential_pushes_with_force_one_over_y(y: float) -> None:
+    """The e^x graph turned a quarter turn clockwise is U(y) = -ln y (Fig. 10.1), whose force
+    F = -dU/dy = 1/y has y F(y) = 1; the triangle of base F and unit altitude has its
+    hypotenuse normal to the curve (Fig. 10.1c)."""
+    assert series.exp_to_log_rotation() == math.pi / 2
+    # the slope is taken at 40 digits: the result is right to the last few bits of a double
+    assert math.isclose(series.log_potential_force_moment(y), 1, rel_tol=1e-15)
+    assert math.isclose(series.log_potential_normal_angle(y), math.pi / 2, rel_tol=1e-15)
+
+
 # -- compound interest ---------------------------------------------------------------------------
 
 
 @given(compounding_periods())
 @example(1_000_000_000)
 def test_compound_interest_halts_just_below_e(m: int) -> None:
-    """e/(2m + 2) < e - (1 + 1/m)^m < e/(2m) (10.3); s solid figures shared with e = 2.71...
-    leave a gap below 10^-(s-1)."""
+    """e/(2m + 2) < e - (1 + 1/m)^m < e/(2m) (10.3); (1 + 1/m)^m shares its first s figures
+    with e = 2.71... (its "solid figures", truncated) but not s + 1, leaving a gap below
+    10^-(s-1)."""
     figures = series.compound_solid_figures(1, m)
+    with mpmath.workdps(series.DIGITS):
+        value, e = _mp(series.compound_growth(1, m)), series.euler_number()
+        for shared in (figures, figures + 1):  # 2.7182... truncated to so many figures
+            same = mpmath.floor(value * 10 ** (shared - 1)) == mpmath.floor(e * 10 ** (shared - 1))
+            assert same == (shared == figures)
+    assert series.compound_solid_figures(1, m, 1, 3) == figures - 3  # beyond the "2.71"
+    assert series.compound_solid_figures(Fraction(1, 2), m, 2) == figures  # r t alone counts
+    assert series.compound_solid_figures(3, 1) == 0  # 4 and e^3 = 20.08... share no figure
     with mpmath.workdps(series.DIGITS):
         e = series.euler_number()
         gap = e - _mp(series.compound_growth(1, m))
@@ -103,10 +167,50 @@ def test_compounding_more_often_pays_more(rate: Fraction, m: int, extra: int) ->
         assert abs(series.compound_growth(rate, m) - low) < Fraction(1, 10**30)
 
 
+@given(
+    rationals(0, 3, 10),
+    rationals(0, 10, 12),
+    rationals(Fraction(1, 100), 10_000, 100),
+    st.integers(min_value=1, max_value=24),
+)
+@example(Fraction(1), Fraction(1), Fraction(1), 2)  # $1 at 100% for a year, twice: $2.25
+def test_interest_is_the_principal_times_a_growth_factor_of_r_t(
+    rate: Fraction, time: Fraction, principal: Fraction, m: int
+) -> None:
+    """p(t) = (1 + r t/m)^m p(0) (10.3) is p(0) times a factor that depends on r t alone; one
+    period is simple interest (1 + r t) p(0); each of the m periods ends t/m later and
+    multiplies by 1 + r t/m; the 40-digit value agrees; the limit is p(0) e^(r t) (10.4),
+    above every compounding."""
+    grown = series.compound_growth_exact(rate, m, time, principal)
+    assert grown == principal * series.compound_growth_exact(rate * time, m)
+    assert series.simple_interest(rate, time, principal) == series.compound_growth_exact(
+        rate, 1, time, principal
+    )
+    period = series.compound_period(m, time)
+    assert m * period == series.compound_period(m, time, m) == time
+    assert series.compound_period(m, time, 2) == 2 * period
+    assert m * series.compound_period(m) == 1  # a year by default
+    factor = series.compound_factor(rate, m, time)
+    assert factor == 1 + rate * period == series.compound_factor(rate * time, m)
+    assert factor**m * principal == grown
+    as_float = series.compound_factor(float(rate), m, float(time))
+    assert math.isclose(as_float, float(factor), rel_tol=REL)
+    with mpmath.workdps(series.DIGITS):
+        assert abs(series.compound_growth(rate, m, time, principal) - grown) < grown / 10**30
+        limit = series.continuous_growth(rate, time, principal)
+        exact_limit = _mp(principal) * mpmath.exp(_mp(rate * time))
+        assert abs(limit - exact_limit) <= exact_limit * mpmath.mpf(10) ** -35
+        assert abs(series.continuous_growth(rate * time) * _mp(principal) - limit) <= (
+            exact_limit * mpmath.mpf(10) ** -35
+        )
+        assert _mp(grown) <= limit
+
+
 # -- binomials and Pascal's triangle -----------------------------------------------------------
 
 
 @given(binomial_powers())
+@example(0)
 def test_pascal_rule_builds_the_factorial_binomials(n: int) -> None:
     """Pascal's rule (Table 1) gives B(n, k) = n!/(k!(n-k)!), symmetric, summing to 2^n (8);
     it is the expansion of (x + y)^n; the row's q - p runs from -n to n."""
@@ -118,12 +222,50 @@ def test_pascal_rule_builds_the_factorial_binomials(n: int) -> None:
     assert row == series.binomial_expansion(n)
     assert series.pascal_row_span(n) == {"min": -n, "max": n}
     assert series.pascal_row_length(n) == n + 1
+    assert series.binomial_box_power(n) == n + 1
+    assert series.binomial_box_expansion(n) == series.pascal_triangle(n + 1)[n + 1]
     if n >= 1:
         above = triangle[n - 1]
         assert all(row[k] == above[k - 1] + above[k] for k in range(1, n))
 
 
+@given(st.integers(min_value=0, max_value=30), st.integers(min_value=0, max_value=30))
+@example(4, 0)  # k = n: all heads, no tails
+def test_choosing_p_of_n_leaves_the_q_others(p: int, q: int) -> None:
+    """Picking p x's from n = p + q factors (x + y) leaves q y's: B(n, p) = B(n, q) =
+    n!/(p! q!) = n(n-1)...(q+1)/p! (after (9)); n! = n (n-1)!; a deck of p x-cards and q
+    y-cards has n cards, and n - p of them are y-cards."""
+    n = series.card_deck_size(p, q)
+    assert n == series.card_deck_size(q, p) == p + q
+    assert series.binomial_complement(n, p) == q
+    assert series.binomial_complement(n, q) == p
+    with pytest.raises(ValueError, match="exceeds"):
+        series.binomial_complement(n, n + 1)
+    assert series.binomial_pq(p, q) == series.binomial_pq(q, p) == series.binomial(n, p)
+    assert series.binomial(n, q) == series.binomial(n, p)
+    assert series.binomial(n, -1) == series.binomial(n, n + 1) == 0
+    factors = series.falling_factors_pq(p, q)
+    assert factors == series.falling_factors(n, p) == sorted(factors, reverse=True)
+    assert len(factors) == p
+    assert all(f > q for f in factors)
+    assert Fraction(math.prod(factors), series.factorial(p)) == series.binomial(n, p)
+    assert series.factorial(n + 1) == (n + 1) * series.factorial(n)
+    assert series.factorial(0) == 1
+
+
+@given(st.integers(min_value=-6, max_value=6), st.integers(0, 12), st.integers(0, 12))
+def test_integer_powers_obey_the_law_of_exponents(base: int, a: int, b: int) -> None:
+    """b^(a + c) = b^a b^c, b^0 = 1, b^1 = b for the repeated products of (9) (2^2 = 4, ...);
+    2^n counts the terms of the product of n factors (x + y) (7)-(8)."""
+    power = series.integer_power
+    assert power(base, a + b) == power(base, a) * power(base, b)
+    assert power(base, 0) == 1
+    assert power(base, 1) == base
+    assert power(2, a) == series.binomial_term_count(a) == sum(series.binomial_expansion(a))
+
+
 @given(st.integers(min_value=0, max_value=12), st.integers(min_value=0, max_value=12))
+@example(3, 3)  # as many derivatives as the power: a constant is left
 def test_falling_factorials_of_binomials_and_derivatives(k: int, d: int) -> None:
     """B(n, k) = n(n-1)...(n-k+1)/k! (the expansion after (10.4)); d^d/dt^d t^k = k!/(k-d)!
     t^(k-d), 0 when d > k (10.11); the Maclaurin divisor of c_k is k!."""
@@ -135,12 +277,26 @@ def test_falling_factorials_of_binomials_and_derivatives(k: int, d: int) -> None
         assert Fraction(product, math.factorial(poly.factorial)) == series.binomial(n, k)
     term = series.derivative_term(k, d)
     if d > k:
-        assert term.factor == 0
+        assert (term.factor, term.power) == (0, 0)  # the zero function, 0 t^0
     else:
         assert term.factor == math.factorial(k) // math.factorial(k - d)
         assert term.power == k - d
         assert term.factors == list(range(k - d + 1, k + 1))
     assert series.maclaurin_divisor(k) == math.factorial(k)
+    assert math.factorial(series.maclaurin_factorial(k)) == math.factorial(k)
+    assert series.inverse_factorial(1) == 0  # the smallest j with j! = 1
+    if k >= 2:
+        assert series.maclaurin_factorial(k) == series.inverse_factorial(math.factorial(k)) == k
+        with pytest.raises(ValueError, match="not a factorial"):
+            series.inverse_factorial(math.factorial(k) + 1)
+    rule = series.power_rule(k)
+    assert (rule.factor, rule.power + rule.drop) == ((k, k) if k else (0, 0))
+    if k >= 1:
+        assert rule.drop == 1
+        assert series.power_rule_drop([k, k + 1]) == 1  # d/dt t^n = n t^(n-1) (10.8)
+    if k >= d >= 1:
+        assert series.power_rule_drop([k], d) == d
+        assert series.power_rule_drop([d, k, k + 5], d) == d
     assert series.falling_factorial(d).roots == list(range(d))
 
 
@@ -148,6 +304,10 @@ def test_falling_factorials_of_binomials_and_derivatives(k: int, d: int) -> None
 def test_gauss_approximates_the_binomial_near_its_peak(n: int, data: st.DataObject) -> None:
     """B(n, n/2 + x)/B(n, n/2) = e^(-2x^2/n) up to log-errors 4x^4/n^3 + 2x^2/n^2."""
     x = data.draw(st.integers(min_value=0, max_value=math.isqrt(n)))
+    # the binomial variance n p (1 - p) = n/4 of n fair tosses: c = 1/(2 n/4), from one toss on
+    assert series.gaussian_exponent_coefficient(n) == Fraction(2, n)
+    assert series.gaussian_exponent_coefficient(1) == 2
+    assert series.binomial_gaussian(1, 0) == {"binomial": 1, "gauss": 1}  # the peak
     both = series.binomial_gaussian(n, x)
     error = abs(math.log(both["binomial"]) - math.log(both["gauss"]))
     assert error <= 1.1 * (4 * x**4 / n**3 + 2 * x**2 / n**2) + 1e-12
@@ -183,13 +343,18 @@ def test_polynomial_derivative_matches_a_difference_quotient(
 def test_sinusoid_partial_sum_lies_within_its_remainder_bounds(
     kind: str, x: float, order: int
 ) -> None:
-    """|f(x) - S_o(x)| <= |x|^(o+1)/(o+1)! for f = sin, cos (all derivatives are at most 1);
-    once the order exceeds |x| the terms of (10.16) shrink and alternate, and the next nonzero
-    term alone bounds the error."""
+    """|f(x) - S_o(x)| <= |x|^(o+1)/(o+1)! for f = sin, cos (all derivatives are at most 1),
+    nearly an equality for |x| <= 1 when x^(o+1) is a term of (10.16); once the order exceeds
+    |x| the terms shrink and alternate, and the next nonzero term alone bounds the error."""
     f = math.sin if kind == "sin" else math.cos
     error = abs(series.sinusoid_partial_sum(kind, x, order) - f(x))
     slack = REL * _exp_scale(x)
-    assert error <= series.sinusoid_remainder_bound(x, order) * (1 + REL) + slack
+    bound = series.sinusoid_remainder_bound(x, order)
+    assert error <= bound * (1 + REL) + slack
+    if series.sinusoid_derivative(kind, order + 1).value_at_zero and abs(x) <= 1:
+        # the first omitted term is x^(o+1)/(o+1)! itself, and the next is smaller by
+        # x^2/((o+2)(o+3)): the bound is all but attained
+        assert error >= bound * (1 - x * x / ((order + 2) * (order + 3))) * (1 - REL) - slack
     if order > abs(x):
         nxt = order + 1
         while series.sinusoid_derivative(kind, nxt).value_at_zero == 0:
@@ -200,18 +365,33 @@ def test_sinusoid_partial_sum_lies_within_its_remainder_bounds(
 @given(st.sampled_from(["sin", "cos"]), st.integers(min_value=0, max_value=40))
 def test_sinusoid_derivatives_repeat_after_four(kind: str, n: int) -> None:
     """d^(n+4) = d^n (10.16's pattern); d/dt adds one w and turns sin -> cos -> -sin (10.15),
-    as a difference quotient confirms; n = (o + offset)/divisor counts the terms."""
+    as a difference quotient confirms; the n-th derivative at 0 is f(n pi/2) (the shift
+    d^n/dt^n f(t) = f(t + n pi/2)), giving the Maclaurin coefficients f(n pi/2)/n! (10.12); the
+    terms up to order o number floor((o + offset)/divisor), one more at each nonzero power."""
     a, b = series.sinusoid_derivative(kind, n), series.sinusoid_derivative(kind, n + 4)
     assert (a.sign, a.function, a.omega_power + 4) == (b.sign, b.function, b.omega_power)
-    assert series.sinusoid_derivative_period(kind) == 4
+    assert a.omega_power == n
     f = {"sin": math.sin, "cos": math.cos}
+    shifted = f[kind](n * math.pi / 2)
+    assert a.value_at_zero == round(shifted)
+    assert series.sinusoid_coefficient(kind, n) == Fraction(round(shifted), math.factorial(n))
+    first = 1 if kind == "sin" else 0
+    assert series.sinusoid_powers(kind, 3) == [first, first + 2, first + 4]
+    assert series.sinusoid_series_factors(kind) == [
+        round(f[kind](j * math.pi / 2)) for j in range(4)
+    ]
+    assert series.sinusoid_derivative_period(kind) == 4
     nxt = series.sinusoid_derivative(kind, n + 1)
     t, h = 0.7, 1e-6
     quotient = a.sign * (f[a.function](t + h) - f[a.function](t - h)) / (2 * h)
     assert math.isclose(quotient, nxt.sign * f[nxt.function](t), abs_tol=1e-8)
     formula = series.sinusoid_term_count_formula(kind)
+    count = series.sinusoid_term_count(kind, n)
     if a.value_at_zero:
-        assert n + formula.offset == formula.divisor * series.sinusoid_term_count(kind, n)
+        assert n + formula.offset == formula.divisor * count
+    assert count == (n + formula.offset) // formula.divisor
+    if n:
+        assert count - series.sinusoid_term_count(kind, n - 1) == abs(a.value_at_zero)
 
 
 # -- Euler's formula, phasors, complex products -----------------------------------------------
@@ -219,21 +399,65 @@ def test_sinusoid_derivatives_repeat_after_four(kind: str, n: int) -> None:
 
 @given(phase_angles(), st.integers(min_value=0, max_value=200))
 def test_euler_formula_and_the_powers_of_i(theta: float, k: int) -> None:
-    """e^(i theta) summed as a series (10.17) is cos theta + i sin theta, of modulus 1; i^k
-    repeats after 4 and multiplies exactly; (10.20b) and (10.21) hold at theta."""
+    """e^(i theta) summed as a series (10.17) is cos theta + i sin theta, of modulus 1, term by
+    term the cosine series plus i times the sine series (10.16); i^k repeats after 4 and
+    multiplies exactly; (10.20b) and (10.21) hold at theta and at theta + (k/8) pi, the angle
+    given in radians plus a multiple of pi; each derivative of e^(-i w t) multiplies by
+    -i w = i^3 w (10.22b); Re psi of psi = e^(-i w t) runs a quarter cycle behind Im psi
+    (Fig. 10.5b)."""
     z = series.euler_series(theta, 60)
     w = series.unit_phasor(theta)
     assert abs(z - w) <= REL * _exp_scale(theta)
+    # the even terms of (10.17) are the cosine series, the odd ones i times the sine series
+    order = k % 24
+    parts = complex(
+        series.sinusoid_partial_sum("cos", theta, order),
+        series.sinusoid_partial_sum("sin", theta, order),
+    )
+    assert abs(series.euler_series(theta, order) - parts) <= REL * _exp_scale(theta)
     assert math.isclose(abs(w), 1, rel_tol=REL)
     assert series.imaginary_unit_power(k + 4) == series.imaginary_unit_power(k)
     assert series.imaginary_unit_power(k) * series.imaginary_unit_power(
         3
     ) == series.imaginary_unit_power(k + 3)
     assert series.imaginary_unit_period() == 4
+    derivative = series.phasor_derivative(k)
+    assert derivative.factor == series.imaginary_unit_power(3 * k)
+    assert derivative.omega_power == k
+    # psi = A e^(-i w t) at w = 2 pi: Re psi runs s of a cycle behind Im psi (Fig. 10.5b)
+    lag = series.phasor_quarter_cycle()
+    psi = cmath.exp(-2j * math.pi * theta)
+    assert abs((psi * cmath.exp(-2j * math.pi * lag)).real - psi.imag) < 1e-12
+    assert 0 <= lag < 1
+    multiple = k / 8
+    phi = theta + multiple * math.pi
+    v = series.unit_phasor(theta, multiple)
+    assert abs(v - cmath.exp(1j * phi)) < 1e-12
+    assert series.unit_phasor() == 1
+    assert math.isclose(series.unit_circle_radius(k % 16 + 1), 1, rel_tol=REL)
+    assert series.unit_phasor(pi_multiple=multiple) == series.unit_phasor(multiple * math.pi, 0)
+    assert series.opposite_phasor_angle(theta) == series.opposite_phasor_angle(theta, 0, -1)
+    assert series.opposite_phasor_angle(pi_multiple=multiple) == series.opposite_phasor_angle(
+        multiple * math.pi
+    )
+    assert series.clockwise_angle(pi_multiple=multiple) == series.clockwise_angle(
+        multiple * math.pi
+    )
     for sign in (-1, 1):
         psi = series.opposite_phasor_angle(theta, exponent_sign=sign)
         assert abs(-series.unit_phasor(sign * psi) - w) < 1e-12
+        psi = series.opposite_phasor_angle(theta, multiple, sign)
+        assert 0 <= psi <= 2 * math.pi  # [0, 2 pi) up to rounding of a tiny -psi
+        assert abs(-series.unit_phasor(sign * psi) - v) < 1e-12
     assert abs(series.unit_phasor(-series.clockwise_angle(theta)) - w) < 1e-12
+    clockwise = series.clockwise_angle(theta, multiple)
+    assert 0 <= clockwise <= 2 * math.pi
+    assert abs(series.unit_phasor(-clockwise) - v) < 1e-12
+    r = 1 + k / 10
+    a, b = r * math.cos(theta), r * math.sin(theta)
+    assert abs(series.phasor_divisor(a, b, theta) - r) < 1e-12 * r
+    assert abs(series.phasor_divisor(-a, -b, theta, 1, -1) - r) < 1e-12 * r
+    assert abs(series.phasor_divisor(a, -b, theta, -1) - r) < 1e-12 * r
     if abs(math.sin(theta)) > 0.05 and abs(math.cos(theta)) > 0.05:
         inverse = series.euler_inverse(theta)
         assert abs(inverse.cos_denominator - 2) < 1e-12
@@ -257,6 +481,9 @@ def test_complex_products_rotate_and_sums_obey_the_cosine_laws(
     once = series.rotate(x, y, a + b)
     assert math.isclose(twice[0], once[0], abs_tol=1e-11 * scale)
     assert math.isclose(twice[1], once[1], abs_tol=1e-11 * scale)
+    same = series.cosine_law(1, a, 1, a)  # |2 z|^2 = 4 and |z - z|^2 = 0: 2 and 2
+    assert math.isclose(same.sum_coefficient, 2, rel_tol=REL)
+    assert math.isclose(same.difference_coefficient, 2, rel_tol=REL)
     if abs(math.cos(a - b)) > 0.1:
         law = series.cosine_law(r, a, 1.7, b)
         assert math.isclose(law.sum_coefficient, 2, rel_tol=1e-9)
@@ -272,3 +499,31 @@ def test_the_minimum_order_is_the_first_within_the_tolerance(x: float, tolerance
     assert abs(series.exp_partial_sum(x, order) - target) <= tolerance * (1 + 1e-9) + 1e-15
     if order:
         assert abs(series.exp_partial_sum(x, order - 1) - target) > tolerance * (1 - 1e-9)
+
+
+@given(st.sampled_from(["sin", "cos"]), st.sampled_from([1.5, 1e-1, 1e-2, 1e-3, 1e-4, 1e-6]))
+def test_the_sinusoid_minimum_order_is_the_first_within_the_tolerance(
+    kind: str, tolerance: float
+) -> None:
+    """Over one oscillation, t in [-pi, pi] (Fig. 10.4), the least-order partial sum of (10.16)
+    within the tolerance ends on a nonzero term (or is the empty sum 0 of order 0): it is
+    within, no lower one is; over k oscillations the error grows to the ends t = +-k pi, below
+    the Lagrange bound (k pi)^(o+1)/(o+1)!."""
+    order = series.sinusoid_min_order(kind, tolerance)
+    error = series.sinusoid_max_error(kind, order)
+    assert error <= tolerance
+    assert error == series.sinusoid_max_error(kind, order, 1)
+    assert order == 0 or series.sinusoid_derivative(kind, order).value_at_zero != 0
+    for lower in range(order):  # every lower partial sum: the empty sum 0 and the nonzero terms
+        if lower == 0 or series.sinusoid_derivative(kind, lower).value_at_zero:
+            assert series.sinusoid_max_error(kind, lower, 1) > tolerance
+    assert series.sinusoid_min_terms(kind, tolerance) == series.sinusoid_term_count(kind, order)
+    f = math.sin if kind == "sin" else math.cos
+    at_end = abs(series.sinusoid_partial_sum(kind, math.pi, order) - f(math.pi))
+    assert at_end <= error <= series.sinusoid_remainder_bound(math.pi, order) * (1 + REL)
+    if order:
+        assert error == at_end  # the largest error is at the ends, t = +-pi
+    two = 2 * math.pi  # two oscillations, t in [-2 pi, 2 pi]
+    at_end = abs(series.sinusoid_partial_sum(kind, two, order) - f(two))
+    error = series.sinusoid_max_error(kind, order, 2)
+    assert at_end <= error <= series.sinusoid_remainder_bound(two, order) * (1 + REL)

@@ -20,10 +20,11 @@ from checks.properties.strategies import (
     fraction_quantities,
     fraction_tower_masses,
     moderate_fraction_masses,
+    rationals,
     soft_masses,
 )
 from mechmodel import towers
-from mechmodel.collisions import kinetic_energy
+from mechmodel.collisions import kinetic_energy, momentum
 
 pytestmark = pytest.mark.properties
 
@@ -32,21 +33,39 @@ pytestmark = pytest.mark.properties
 @example([Fraction(100), Fraction(30), Fraction(10)], Fraction(1))  # Fig. 8.1(b)
 def test_independent_tower_launch_law(masses: list[Fraction], v_drop: Fraction) -> None:
     """Dropped at speed v, an independent-collision tower launches its top ball at V_top with
-    V_top + v = 2 v prod_k 2 m_k / (m_k + m_(k+1)) (Figs. 8.1(b), 8.2), exactly."""
+    V_top + v = 2 v prod_k 2 m_k / (m_k + m_(k+1)) (Figs. 8.1(b), 8.2), exactly. Every velocity
+    is proportional to v: the book's towers, dropped at unit speed, give them in units of v."""
     tower = towers.independent_tower(masses, v_drop)
     product = Fraction(1)
     for lower, upper in itertools.pairwise(masses):
         product *= 2 * lower / (lower + upper)
     assert tower.velocities[-1] + v_drop == 2 * v_drop * product
+    unit = towers.independent_tower(masses)
+    assert unit.rebound == 1
+    assert tower.rebound == v_drop
+    assert tower.velocities == tuple(v_drop * u for u in unit.velocities)
+    # each bang moves along its momentum line, of slope -m_k/m_(k+1) (Fig. 8.1(b))
+    for bang, slope in zip(tower.bangs, tower.momentum_slopes, strict=True):
+        (u1, u2), (w1, w2) = bang.before, bang.after
+        assert w2 - u2 == -slope * (w1 - u1)
+    # the top ball's kinetic energy grows by (V_top/v)^2 (after Fig. 8.2)
+    top = masses[-1]
+    boost = kinetic_energy((top,), (tower.velocities[-1],)) / kinetic_energy((top,), (v_drop,))
+    assert tower.energy_boost == boost == towers.energy_boost(tower.velocities[-1], v_drop)
+    assert towers.energy_boost(unit.velocities[-1]) == boost
 
 
 @given(fraction_tower_masses())
 def test_independent_tower_stays_under_the_inf_limit(masses: list[Fraction]) -> None:
     """Finite masses launch the top ball of N balls below the INF limit 2^N - 1 (Fig. 4.5,
-    exercise 1.8.2), which ``inf_limit_tower`` reaches exactly."""
+    exercise 1.8.2), which ``inf_limit_tower`` reaches exactly: ball k leaves at (2^k - 1) v."""
     n = len(masses)
     limit = towers.inf_limit_tower(n, 1)[-1]
     assert limit == 2**n - 1
+    # ball k leaves its immovable partner at 2 V + v: V_k = (2^k - 1) v
+    v = masses[0]
+    assert towers.inf_limit_tower(n, v) == tuple((2**k - 1) * v for k in range(1, n + 1))
+    assert towers.inf_limit_tower(n) == towers.inf_limit_tower(n, 1)
     assert towers.independent_tower(masses, 1).velocities[-1] < limit or n == 1
 
 
@@ -60,32 +79,105 @@ def test_geometric_tower_launch(n: int, ratio: Fraction) -> None:
 
 @given(ball_counts())
 def test_identical_column_needs_triangular_number_of_bangs(n: int) -> None:
-    """A column of N identical balls needs N (N + 1) / 2 independent bangs (Fig. 8.2(c-d))."""
-    assert towers.column_bounce_bangs(n, 1) == n * (n + 1) // 2
+    """A column of N identical balls needs N (N + 1) / 2 independent bangs (Fig. 8.2(c-d)),
+    whatever the drop speed (the count is scale-free)."""
+    assert towers.column_bounce_bangs(n) == n * (n + 1) // 2
+    assert towers.column_bounce_bangs(n, 1, Fraction(7, 3)) == n * (n + 1) // 2
+
+
+@given(ball_counts(), rationals(3, 20, 10))
+@example(2, Fraction(3))  # 3:1 stops ball 1 dead (point M of Fig. 4.5b)
+@example(4, Fraction(3))  # the 3:1 tower of Fig. 8.2
+def test_a_column_three_times_heavier_at_each_step_bangs_once_per_ball(
+    n: int, ratio: Fraction
+) -> None:
+    """With each ball at least 3 times the one above it, a dropped column makes only the N
+    bangs of the independent tower, the floor bounce and Bang(2)12, Bang(3)23, ... (Fig. 8.2):
+    a ball rising at V >= v off a bang with a ball r >= 3 times lighter keeps
+    ((r - 1) V - 2 v)/(r + 1) >= 0 (at r = 3 ball 1 stops dead, Fig. 4.5b's point M), so
+    nothing falls back onto the floor or catches up again."""
+    assert towers.column_bounce_bangs(n, ratio) == n
+    assert towers.column_bounce_bangs(n, ratio, Fraction(1, 3)) == n
+    tower = towers.geometric_tower(n, ratio)
+    assert all(v >= 0 for v in tower.velocities)
+    assert list(tower.velocities) == sorted(tower.velocities)
 
 
 @given(moderate_fraction_masses(), fraction_quantities(), st.integers(1, 6), st.integers(1, 6))
 def test_pile_up_keeps_momentum_and_loses_energy(
     mass: Fraction, speed: Fraction, moving: int, still: int
 ) -> None:
-    """Ka-runch pile-ups keep the momentum and lose energy (Figs. 8.5-8.6), exactly."""
+    """Ka-runch pile-ups keep the momentum and lose energy (Figs. 8.5-8.6), exactly: the final
+    energy P^2/2M is the incoming one times moving/(moving + still) cars; the slopes run 1:1,
+    2:1, 3:1, ..., their inverses the harmonic progression 1/1, 1/2, 1/3, ...."""
     if moving > 1 and still > 1:
         still = 1
     pile = towers.pile_up(mass, speed, moving, still)
-    assert pile.momentum_out == pile.momentum_in
+    assert pile.momentum_out == pile.momentum_in == momentum([mass] * moving, [speed] * moving)
     assert pile.final_mass == (moving + still) * mass
-    assert pile.energy_lost >= 0
+    assert pile.final_velocity * pile.final_mass == pile.momentum_in
+    assert pile.energy_in == kinetic_energy([mass] * moving, [speed] * moving)
+    assert pile.energy_out == kinetic_energy((pile.final_mass,), (pile.final_velocity,))
+    assert pile.energy_lost == pile.energy_in - pile.energy_out >= 0
+    # the same momentum P in more mass: the energy P^2/2M falls as the mass grows
+    assert pile.energy_out * (moving + still) == pile.energy_in * moving
     assert pile.slopes == tuple(range(1, len(pile.slopes) + 1))
+    assert pile.inverse_slopes == tuple(Fraction(1, k) for k in pile.slopes)
 
 
 @given(st.integers(2, 15), moderate_fraction_masses(), fraction_quantities())
 def test_pellet_rocket_momentum_is_zero_sum(n: int, m: Fraction, speed: Fraction) -> None:
     """Every blast keeps the total momentum zero (8.7), and the rocket's velocity is the partial
-    sum of the boosts m |ve| / M_b: the harmonic series for unit pellets, exactly."""
+    sum of the boosts m |ve| / M_b: the harmonic series for unit pellets, exactly. Pellet b
+    leaves at the exhaust velocity relative to the rocket before blast b (Fig. 8.8), so the
+    first pellet to fly forward follows the first blast after which the rocket outruns the
+    exhaust speed; the last balls left in the rocket lead up to the payload."""
     rocket = towers.pellet_rocket(n, m, -speed)
     assert all(p == 0 for p in rocket.total_momenta)
     for b, v in enumerate(rocket.velocities):
         assert v == speed * sum(Fraction(1, n - 1 - j) for j in range(b + 1))
+    assert (rocket.payload_label, rocket.last_blast, rocket.blasts) == (n - 1, n - 2, n - 1)
+    assert rocket.pellet_momentum == -m * speed
+    before = (0, *rocket.velocities)
+    for b in range(n - 1):
+        assert rocket.rocket_masses[b] == (n - 1 - b) * m  # the 10m, 9m, ... of (8.7)
+        # pellet b leaves at -|ve| relative to the rocket before its blast, whose boost
+        # cancels its momentum (zero-sum, (8.7a)); the pow(b) line has slope -m/M_b
+        assert rocket.pellet_velocities[b] == before[b] - speed
+        assert rocket.rocket_masses[b] * rocket.boosts[b] == -rocket.pellet_momentum
+        assert rocket.velocities[b] - before[b] == rocket.boosts[b]
+        assert rocket.slopes[b] == -m / rocket.rocket_masses[b]
+    fast = rocket.first_fast_blast
+    assert fast is None or rocket.velocities[fast] > speed >= before[fast]
+    # the first pellet to fly forward is the one after the rocket outruns its exhaust
+    following = None if fast is None or fast + 1 > n - 2 else fast + 1
+    assert rocket.first_forward_pellet == following
+    if fast is None:
+        assert rocket.velocities[-1] <= speed
+
+
+@given(st.integers(min_value=1, max_value=12), st.integers(min_value=1, max_value=12))
+@example(3, 3)  # the payload alone
+def test_the_rocket_keeps_its_front_balls(n: int, remaining: int) -> None:
+    """The pellets go from the rear, ball 0 first (Fig. 8.8): the k balls still in the rocket
+    are the last k labels, the payload N - 1 at the head; no more than N can remain."""
+    if remaining > n:
+        with pytest.raises(ValueError, match="more balls"):
+            towers.rocket_remaining(n, remaining)
+        return
+    left = towers.rocket_remaining(n, remaining)
+    assert len(left) == remaining
+    assert left[-1] == n - 1
+    assert list(left) == list(range(left[0], left[0] + remaining))
+
+
+@given(st.floats(min_value=-1e3, max_value=1e3).filter(lambda v: v != 0))
+def test_the_totally_inelastic_point_is_on_the_45_degree_line(v_com: float) -> None:
+    """The Ka-runch point (V_COM, V_COM) lies on the line V1 = V2 through the origin, at 45
+    degrees, whichever the sign of V_COM (Fig. 8.3c-8.4); the origin alone fixes no line."""
+    assert math.isclose(towers.equal_velocity_line_angle(v_com), math.pi / 4, rel_tol=1e-15)
+    with pytest.raises(ValueError, match="origin"):
+        towers.equal_velocity_line_angle(0)
 
 
 @given(moderate_fraction_masses(), moderate_fraction_masses(), st.data())
@@ -124,3 +216,6 @@ def test_zero_gap_tower_keeps_energy_scales_and_stays_under_inf_limit(
     other = towers.zero_gap_tower(masses, power, 3.0, 0.2)
     for a, b in zip(run.velocities, other.velocities, strict=True):
         assert abs(b.value / 3.0 - a.value) <= a.error + b.error / 3.0
+    # the time scale (m / k)^(1/(n+1)) v^((1-n)/(n+1)) of F = k y^n (unit k and v by default)
+    stretch = (1 / 0.2 * 3.0 ** (1 - power)) ** (1 / (power + 1))
+    assert math.isclose(other.duration, stretch * run.duration, rel_tol=1e-9)

@@ -28,6 +28,7 @@ pytestmark = pytest.mark.properties
 @given(levi_civita_index_quads())
 @example((1, 2, 1, 2))
 @example((1, 2, 2, 1))
+@example((2, 3, 2, 3))  # the sum needs its k = 1 term
 def test_levi_civita_identity(quad: tuple[int, int, int, int]) -> None:
     """sum_k eps_ijk eps_mnk = delta_im delta_jn - delta_in delta_jm (1.A.7)."""
     assert vectors.epsilon_contraction(*quad) == vectors.delta_expansion(*quad)
@@ -36,8 +37,11 @@ def test_levi_civita_identity(quad: tuple[int, int, int, int]) -> None:
 @given(st.permutations([1, 2, 3]), st.integers(0, 2), st.integers(0, 2))
 def test_levi_civita_changes_sign_under_a_swap(perm: list[int], a: int, b: int) -> None:
     """Swapping two indices of eps_ijk changes its sign; eps_123 = +1, and a repeated index
-    gives 0 (1.A.3a)."""
+    or one outside 1..3 gives 0 (1.A.3a)."""
     assert vectors.levi_civita(1, 2, 3) == 1
+    outside = list(perm)
+    outside[a] = 4
+    assert vectors.levi_civita(*outside) == 0
     swapped = list(perm)
     swapped[a], swapped[b] = swapped[b], swapped[a]
     expected = vectors.levi_civita(*perm) * (1 if a == b else -1)
@@ -97,10 +101,36 @@ def test_polar_products_equal_component_products(la, ta, lb, tb) -> None:
 
 
 @given(exact_plane_vectors(), exact_plane_vectors())
+@example((Fraction(1), Fraction(0)), (Fraction(0), Fraction(1)))  # unit square, A_y = 0
 def test_triangles_are_half_the_cross_product(a, b) -> None:
     """By Heron's formula the parallelogram of A and B has area |A x B| and the A+B and A-B
-    triangles half of it (Fig. 1.A.2), exactly."""
+    triangles half of it (Fig. 1.A.2), exactly (rational ratios stay Fractions); parallel
+    vectors span no figure."""
     assume(vectors.plane_cross(a, b) != 0)
     r = vectors.area_ratios(a, b)
     assert r.parallelogram == 1
     assert r.sum_triangle == Fraction(1, 2) == r.difference_triangle
+    assert all(type(x) is Fraction for x in (r.parallelogram, r.sum_triangle))
+    assert type(r.difference_triangle) is Fraction
+    with pytest.raises(ValueError, match="parallel"):
+        vectors.area_ratios(a, [2 * a[0], 2 * a[1]])
+
+
+@given(exact_plane_vectors(), exact_plane_vectors(), exact_plane_vectors(), exact_plane_vectors())
+def test_heron_area_is_half_the_cross_product_anywhere(
+    a: tuple[Fraction, Fraction],
+    b: tuple[Fraction, Fraction],
+    c: tuple[Fraction, Fraction],
+    shift: tuple[Fraction, Fraction],
+) -> None:
+    """Heron's formula in the squared sides gives the area of any triangle P, Q, R as
+    1/2 |(Q - P) x (R - P)| (Fig. 1.A.2): unchanged when the triangle is moved, exact for
+    rational vertices and within rounding for float ones."""
+    cross = vectors.plane_cross([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]])
+    area_sq = vectors.heron_area_squared(a, b, c)
+    assert area_sq == cross**2 / 4
+    moved = [[p[0] + shift[0], p[1] + shift[1]] for p in (a, b, c)]
+    assert vectors.heron_area_squared(*moved) == area_sq
+    as_float = vectors.heron_area_squared(*([float(x) for x in p] for p in (a, b, c)))
+    sides = max(abs(float(x)) for p in (a, b, c) for x in p) ** 4
+    assert abs(as_float - float(area_sq)) <= 1e-12 * (1 + sides)
