@@ -271,6 +271,8 @@ def test_the_book_numbering_of_bangs(m1: Fraction, m2: Fraction, v0: Fraction, n
 @example(49.0, 1.0, 1.0, -1.0)  # Fig. 5.1: 21 bangs after the floor bounce
 @example(1.0, 1.0, 1.0, 0.0)  # equal masses: a tie on a count boundary
 @example(3.0, 1.0, 1.0, -1.0)  # ratio 3: another tie
+@example(1.0, 1.0, 1.0, 1e-12)  # just off a tie of the ceiling count: mpmath decides
+@example(6.0, 2.0, 1.0, -1.0 + 1e-12)  # just off the ratio-3 tie of the ball count
 def test_the_o1_counter_agrees_with_the_simulation(
     m1: float, m2: float, v1: float, v2: float
 ) -> None:
@@ -287,6 +289,26 @@ def test_the_o1_counter_agrees_with_the_simulation(
         got, want = state_after_bangs(m1, m2, v1, v2, n), sequence.velocities[n]
         assert abs(got[0] - want[0]) <= 1e-9 * scale
         assert abs(got[1] - want[1]) <= 1e-9 * scale
+
+
+@given(
+    moderate_fraction_masses(),
+    moderate_fraction_masses(),
+    fraction_velocities(),
+    fraction_velocities(),
+)
+@example(Fraction(1), Fraction(1), Fraction(1), Fraction(1, 10**12))  # near-ties: mpmath
+@example(Fraction(6), Fraction(2), Fraction(1), Fraction(1, 10**12) - 1)
+def test_the_o1_counter_agrees_with_the_exact_simulation(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """The rotation picture (5.12)-(5.13) counts the bangs of exact states as the exact
+    bang-by-bang sequence (5.4) makes them, kind by kind."""
+    sequence = ceiling_sequence(m1, m2, v1, v2)
+    count = bang_count(m1, m2, v1, v2)
+    kinds = [b.kind for b in sequence.bangs]
+    assert (count.total, count.ball_bangs) == (sequence.count, kinds.count(BALLS))
+    assert count.first == (kinds[0] if kinds else None)
 
 
 @given(st.integers(min_value=0, max_value=3))
@@ -354,9 +376,11 @@ def test_a_boosted_and_rescaled_collision_is_the_same_collision(
     total = 2 * kinetic_energy((m1, m2), shifted.before)
     gained = m2 * (shifted.after[1] ** 2 - shifted.before[1] ** 2)
     assert shifted.energy_transfer == abs(gained) / total
-    assert galileo_shifted_collision(m1, m2, v1, v2, boost).energy_transfer == (
-        shifted.energy_transfer
-    )
+    unscaled = galileo_shifted_collision(m1, m2, v1, v2, boost)
+    assert unscaled.energy_transfer == shifted.energy_transfer
+    assert unscaled.after == tuple(v + boost for v in hit.after)
+    if (v1, v2) != (0, 0):
+        assert galileo_shifted_collision(m1, m2, v1, v2).after == hit.after  # no boost
     if v1 != v2:
         assert galileo_shifted_collision(m1, m1, v1, v2, -v2, scale).energy_transfer == 1
 
@@ -406,8 +430,8 @@ def test_figures_of_agreement_count_the_rounded_figures(
     """A one-figure value d x 10^e agrees with d.00...0j x 10^e (z zeros after the point, j
     from 1 to 4) or with the value as far below d to z + 1 significant figures: rounding it to
     that many gives d, one more figure does not (the Earth's 6e24 kg, 'good to 2 figures',
-    after Fig. 4.2); several pairs agree to the fewest figures of any. A one-figure value agrees
-    with itself to all 15 figures a double holds."""
+    after Fig. 4.2), and with d.6 x 10^e to none; several pairs agree to the fewest figures of
+    any. A one-figure value agrees with itself to all 15 figures a double holds."""
     step = Decimal(last).scaleb(-(zeros + 1))
     precise = float((digit + step if above else digit - step).scaleb(exponent))
     approx = float(Decimal(digit).scaleb(exponent))
@@ -415,5 +439,35 @@ def test_figures_of_agreement_count_the_rounded_figures(
     assert figures_of_agreement([approx, approx], [precise, precise]) == zeros + 1
     assert figures_of_agreement([approx, approx], [precise, approx]) == zeros + 1
     assert figures_of_agreement([approx], [approx]) == 15
+    off = float((digit + Decimal("0.6")).scaleb(exponent))  # rounds to d + 1: no figure agrees
+    assert figures_of_agreement([approx], [off]) == 0
     with pytest.raises(ValueError, match="positive"):
         figures_of_agreement([0.0], [precise])
+    with pytest.raises(ValueError, match="positive"):
+        figures_of_agreement([approx], [0.0])
+
+
+@given(
+    st.integers(min_value=-2, max_value=2),
+    st.integers(min_value=-2, max_value=2),
+    st.booleans(),
+    st.booleans(),
+)
+def test_the_game_is_over_when_the_history_has_no_next_bang(
+    v1: int, v2: int, floor: bool, ceiling: bool
+) -> None:
+    """Another bang is possible exactly when the space-time history from that state has one:
+    ball 1 gaining on ball 2, ball 2 rising to a ceiling or ball 1 falling to a floor; balls
+    at rest relative to each other and to the walls are at the game-over point (5.13)."""
+    history = bang_history(
+        Fraction(2),
+        Fraction(1),
+        Fraction(1),
+        Fraction(2),
+        Fraction(v1),
+        Fraction(v2),
+        ceiling=Fraction(3) if ceiling else None,
+        floor=0 if floor else None,
+        max_bangs=1,
+    )
+    assert bang_possible(v1, v2, floor=floor, ceiling=ceiling) == (history.count == 1)

@@ -35,14 +35,29 @@ REL = 1e-12
 # --- the dent (7.1)-(7.4) -----------------------------------------------------------------------
 
 
-@given(gaps(), st.floats(min_value=0, max_value=1))
+@given(gaps(), st.floats(min_value=0, max_value=2))
+@example(1.0, 2.0)  # pressed flat through the whole diameter: a point again
 def test_flat_radius_is_the_geometric_mean(radius: float, fraction: float) -> None:
     """r^2 = x (2R - x): the flat's radius is the geometric mean of the depth and the rest of
-    the diameter (7.1a); the exact sagitta takes r back to x (7.1b)."""
+    the diameter (7.1a), widest (r = R) at x = R; the exact sagitta takes r back to x (7.1b) on
+    the near half; d(r^2)/dx is 2R - 2x, the 2R of r^2 ~ 2 R x at first contact. A depth beyond
+    the diameter, or a flat wider than the ball, is a ValueError."""
     depth = fraction * radius
     r = contact.flat_spot_radius(radius, depth)
     assert math.isclose(r * r, depth * (2 * radius - depth), rel_tol=4 * REL, abs_tol=REL)
-    assert math.isclose(contact.sagitta(radius, r), depth, rel_tol=1e-9, abs_tol=1e-9 * radius)
+    assert r <= radius * (1 + REL)
+    if depth <= radius:
+        near = contact.sagitta(radius, r)
+        assert math.isclose(near, depth, rel_tol=1e-9, abs_tol=1e-9 * radius)
+    h = 1e-6 * radius
+    quotient = (depth + h) * (2 * radius - depth - h) - (depth - h) * (2 * radius - depth + h)
+    slope = contact.flat_area_slope(radius, depth)
+    assert math.isclose(slope, quotient / (2 * h), rel_tol=1e-6, abs_tol=1e-6 * radius)
+    assert math.isclose(contact.flat_area_slope(radius, 0), 2 * radius, rel_tol=4 * REL)
+    with pytest.raises(ValueError, match="diameter"):
+        contact.flat_spot_radius(radius, 2.5 * radius)
+    with pytest.raises(ValueError, match="between 0 and R"):
+        contact.sagitta(radius, 1.5 * radius)
 
 
 @given(fraction_quantities(), st.fractions(min_value=0, max_value=1, max_denominator=12))
@@ -57,6 +72,11 @@ def test_dent_volume_is_the_integral_of_the_flat(radius: Fraction, fraction: Fra
         abs_tol=REL,
     )
     assert dent.whole_ball == Fraction(4, 3)
+    # the powers of X of its terms, the 3 of X^3 / 3, V ~ R pi X^2 for a shallow dent, and the
+    # whole ball's R^3
+    assert (dent.quadratic_power, dent.cubic_power, dent.cubic_denominator) == (2, 3, 3)
+    assert abs(dent.small_dent_power - 2) <= 1e-8
+    assert abs(dent.whole_ball_power - 3) <= 1e-12
 
 
 @given(positive_quantities(), gaps(), st.floats(min_value=0, max_value=1))
@@ -76,6 +96,11 @@ def test_constant_target_removes_the_fall_energy(height: Fraction, distance: Fra
     target_ = contact.constant_force_target(height, distance)
     assert target_.force * distance == height
     assert target_.potential_slope == -target_.force
+    assert contact.work_of_constant_force(target_.force, distance) == target_.energy == height
+    # in units of g the deceleration is the force per weight, whichever sign g is written with
+    assert contact.deceleration(target_.force, -distance) == target_.force * distance == height
+    # a longer stop: the force falls as the distance grows (Fig. 7.3c)
+    assert contact.stopping_force_reduction(height, distance, 5 * distance) == 5
 
 
 @given(fraction_quantities(), fraction_quantities())
@@ -95,14 +120,30 @@ def test_vertex_is_where_the_force_vanishes(a: Fraction, b: Fraction) -> None:
     f = contact.quadratic_potential_force(a, b)
     assert f.slope * v.y_shift + f.constant == 0
     assert (v.y_shift, v.u_shift) == (-b / (2 * a), -b * b / (4 * a))
+    assert (v.shift_denominator, v.depth_denominator) == (2, 4)
+    # f = -du/dy: minus the central difference quotient, exact for a parabola
+    h = Fraction(1, 7)
+    for y in (v.y_shift, Fraction(0), b):
+        quotient = (a * (y + h) ** 2 + b * (y + h) - a * (y - h) ** 2 - b * (y - h)) / (2 * h)
+        assert f.slope * y + f.constant == -quotient
+    assert (f.slope_magnitude, f.constant_magnitude) == (abs(f.slope), abs(f.constant))
 
 
 @given(positive_quantities(), positive_quantities(), positive_quantities())
 def test_linear_target_takes_up_the_energy(a: float, h: float, scale: float) -> None:
     """The target a y^2 stops the fall where a y^2 = h, and its ramp does that work."""
     stop = contact.linear_target(a, h, h * scale)
+    assert stop.stop < 0
     assert math.isclose(a * stop.stop**2, h, rel_tol=4 * REL)
     assert math.isclose(stop.energy, h, rel_tol=8 * REL)
+    # the force at the stop is -dU/dy, and the same stop in metres
+    assert math.isclose(stop.max_force, -2 * a * stop.stop, rel_tol=4 * REL)
+    assert math.isclose(stop.stop_m, stop.stop * scale, rel_tol=4 * REL)
+    assert stop.stop_depth_m == -stop.stop_m
+    # with the weight counted, a y^2 + y = h turns lower down
+    total = stop.total_stop
+    assert total < stop.stop
+    assert math.isclose(a * total * total + total, h, rel_tol=1e-9, abs_tol=1e-9 * abs(total))
 
 
 # --- the soft-contact integrator --------------------------------------------------------------

@@ -221,6 +221,19 @@ def test_the_rotation_picture_counts_the_bangs_of_the_sequence(m1: Fraction, m2:
     assert rotation_picture_bang_count(m1, m2) == ceiling_sequence(m1, m2, 1, -1).count
 
 
+@given(masses(), masses())
+@example(376.3496345680438, 1.0)  # pi/beta rounds up past a whole number: the count steps back
+@example(569.2651083271583, 1.0)  # pi/beta rounds down to a whole number: the count steps on
+def test_the_rotation_picture_count_is_the_least_that_ends_the_bangs(m1: float, m2: float) -> None:
+    """The bang clock's count is the least n with (n + 2) beta >= pi, beta = theta/2 (5.12):
+    after n bangs none is possible and after n - 1 one still is, also where pi/beta lies
+    within rounding of a whole number (Fig. 5.1, Exercise 1.5.1's game-over point)."""
+    beta = bang_angle(m1, m2).angle / 2
+    n = rotation_picture_bang_count(m1, m2)
+    assert (n + 2) * beta >= math.pi
+    assert n == 0 or (n + 1) * beta < math.pi
+
+
 @given(masses(), masses(), velocities(), velocities())
 def test_a_bang_keeps_the_length_of_the_mass_scaled_velocity(
     m1: float, m2: float, v1: float, v2: float

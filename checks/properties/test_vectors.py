@@ -23,6 +23,9 @@ from checks.properties.strategies import (
 from mechmodel import vectors
 
 pytestmark = pytest.mark.properties
+F = Fraction
+# generic exact vectors: every component distinct and nonzero, so a wrong product shows at once
+A3, B3, C3 = (F(1), F(2), F(3)), (F(-2), F(1, 2), F(4)), (F(3), F(-1), F(1, 3))
 
 
 @given(levi_civita_index_quads())
@@ -50,6 +53,7 @@ def test_levi_civita_changes_sign_under_a_swap(perm: list[int], a: int, b: int) 
 
 
 @given(exact_vectors3(), exact_vectors3(), exact_vectors3())
+@example(A3, B3, C3)
 def test_triple_product_is_the_determinant_and_cyclic(a, b, c) -> None:
     """A . (B x C) = det [A; B; C] = eps_ijk A_i B_j C_k (1.A.6), unchanged by a cyclic
     shift and reversed by a swap."""
@@ -60,12 +64,14 @@ def test_triple_product_is_the_determinant_and_cyclic(a, b, c) -> None:
 
 
 @given(exact_vectors3(), exact_vectors3(), exact_vectors3())
+@example(A3, B3, C3)
 def test_double_cross_expansion(a, b, c) -> None:
     """A x (B x C) = (A . C) B - (A . B) C, the first application of (1.A.7)."""
     assert vectors.double_cross(a, b, c) == vectors.bac_cab(a, b, c)
 
 
 @given(exact_vectors3(), exact_vectors3())
+@example(A3, B3)
 def test_cross_product_is_antisymmetric_and_normal(a, b) -> None:
     """A x B = -B x A (anti-reflexive), it is perpendicular to both A and B, and
     |A x B|^2 + (A . B)^2 = |A|^2 |B|^2 (sine and cosine of one angle, (1.A.1))."""
@@ -102,6 +108,7 @@ def test_polar_products_equal_component_products(la, ta, lb, tb) -> None:
 
 @given(exact_plane_vectors(), exact_plane_vectors())
 @example((Fraction(1), Fraction(0)), (Fraction(0), Fraction(1)))  # unit square, A_y = 0
+@example((Fraction(3), Fraction(1)), (Fraction(1), Fraction(2)))  # the catalogue's sample pair
 def test_triangles_are_half_the_cross_product(a, b) -> None:
     """By Heron's formula the parallelogram of A and B has area |A x B| and the A+B and A-B
     triangles half of it (Fig. 1.A.2), exactly (rational ratios stay Fractions); parallel
