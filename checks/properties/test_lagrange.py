@@ -508,15 +508,23 @@ def test_palette_hues_are_roots_of_unity(step: int, colours: int) -> None:
 
 
 @given(
-    st.floats(min_value=0.01, max_value=100),
+    st.floats(min_value=-3, max_value=6).map(lambda k: 10.0**k),
     st.lists(st.floats(min_value=-7, max_value=7), min_size=1, max_size=6),
 )
+@example(1e6, [0.0, 1.0])
 def test_common_speed_is_the_speed_of_every_fragment(speed: float, angles: list[float]) -> None:
     """Fragments flying off with one speed in any directions (exercise 1.12.3) share that speed:
-    common_speed returns it, exactly when every |v| is the same float (3-4-5 triangles)."""
+    common_speed returns it at any scale, exactly when every |v| is the same float (3-4-5
+    triangles, or all at rest); speeds differing by rounding (1e-12) are one speed, speeds
+    differing by 1% are not, whatever the units."""
     velocities = [(speed * math.cos(a), speed * math.sin(a)) for a in angles]
     assert _close(lagrange.common_speed(velocities), speed)
     assert lagrange.common_speed([(3, 4), (-4, 3), (0, 5), (5, 0)]) == 5
+    assert lagrange.common_speed([(0, 0), (0.0, 0.0)]) == 0
+    rounded = lagrange.common_speed([(speed, 0.0), (0.0, speed * (1 + 1e-12))])
+    assert _close(rounded, speed, rel=1e-11)
+    with pytest.raises(ValueError, match="different speeds"):
+        lagrange.common_speed([(speed, 0.0), (0.0, speed * 1.01)])
 
 
 def test_common_speed_rejects_different_speeds() -> None:
@@ -525,3 +533,18 @@ def test_common_speed_rejects_different_speeds() -> None:
     assert lagrange.common_speed([[0, 1], [1, 0], [-(2**-0.5), 2**-0.5]]) == pytest.approx(1)
     with pytest.raises(ValueError, match="different speeds"):
         lagrange.common_speed([[0, 1], [1, 1]])
+
+
+@given(st.integers(min_value=-6, max_value=6), exact_masses(), exact_velocities())
+def test_scaled_kinetic_energy_is_the_same_energy(twice_s: int, m: Fraction, v: Fraction) -> None:
+    """m v^2 / 2 rewritten in u = m^s v ((12.1), (12.2)) is c u^k m^q with c = 1/2, k = 2 and
+    q = 1 - 2s, the same number for every mass and velocity (s = 1/2: E(V) = V^2/2; s = 1:
+    H(p) = p^2/(2m)); checked with s a multiple of 1/2 and m a perfect square, exactly."""
+    s = Fraction(twice_s, 2)
+    form = lagrange.scaled_kinetic_energy(s)
+    root = m  # the mass is root^2, so m^s = root^(2s) stays rational
+    mass = root * root
+    u = root**twice_s * v
+    rebuilt = form.coefficient * u**form.coordinate_power * root ** int(2 * form.mass_power)
+    assert rebuilt == mass * v * v / 2
+    assert form.mass_power == 1 - 2 * s
