@@ -20,6 +20,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from decimal import Decimal
+from fractions import Fraction
 from typing import Any, Literal
 
 from mechmodel import inputs
@@ -426,9 +427,12 @@ def bang_count(m1: Any, m2: Any, v1: Any, v2: Any) -> BangCount:
 
     The rotation picture (5.12)-(5.13) of the comment above. Where a count's boundary falls
     within a relative 1e-9 of a whole number the angles are recomputed with mpmath at enough
-    digits; a true tie (the state exactly on a boundary, possible only for mass ratios 1 and 3)
-    is settled by simulating the few bangs exactly. Agrees with ``ceiling_sequence`` (the
-    reference) bang for bang.
+    digits (more for a wide mass ratio or a wide spread of the speeds); a true tie (a later
+    state exactly on a boundary: v1 = v2 or v2 = 0 after some bangs) is settled by simulating
+    the inputs' exact rational values. The first bang's kind is decided exactly on the given
+    velocities. The counts are those of the inputs' exact values: they agree with
+    ``ceiling_sequence`` (the reference) run exactly, and with a float run wherever its
+    rounding decides no bang (near a boundary, 2 v_com - v1 can lose a tiny velocity).
     """
     inputs.mass(m1, "m1")
     inputs.mass(m2, "m2")
@@ -436,18 +440,31 @@ def bang_count(m1: Any, m2: Any, v1: Any, v2: Any) -> BangCount:
     inputs.real(v2, "v2")
     if v1 == 0 and v2 == 0:
         return BangCount(0, 0, None)
-    digits = 30 + int(abs(math.log10(float(m1) / float(m2))))
+    # enough digits for the mass ratio and for the velocities' spread (a v2 of 1e-300 beside a
+    # v1 of 1 moves a boundary by 1e-300)
+    speeds = [abs(float(v)) for v in (v1, v2) if v]
+    spread = math.log10(max(speeds)) - math.log10(min(speeds)) if all(speeds) else 0.0
+    digits = 30 + int(abs(math.log10(float(m1) / float(m2))) + spread)
     for precise in (False, True):
         counts = _count_at(m1, m2, v1, v2, precise=precise, digits=digits)
         if counts is not None:
             return counts
-    sequence = ceiling_sequence(m1, m2, v1, v2)
+    # a true tie: the exact values of the inputs are simulated without rounding
+    sequence = ceiling_sequence(*(_exact(x) for x in (m1, m2, v1, v2)))
     balls = sum(b.kind == BALLS for b in sequence.bangs)
     first = sequence.bangs[0].kind if sequence.bangs else None
     return BangCount(balls, sequence.count - balls, first)
 
 
 bang_count.monotonic = False  # type: ignore[attr-defined]  # a count jumps
+
+
+def _exact(x: Any) -> Any:
+    """The exact rational value of an int, float, Fraction or Decimal; other numbers as given."""
+    try:
+        return Fraction(x)
+    except TypeError:
+        return x
 
 
 def _count_at(
@@ -461,12 +478,14 @@ def _count_at(
         pi = mpmath.pi if precise else math.pi
         half = mpmath.mpf(1) / 2 if precise else 0.5
         margin = mpmath.mpf(10) ** (10 - digits) if precise else _TIE_MARGIN
+        # which bang comes first is decided on the velocities themselves, exactly: the angles
+        # of a state on a boundary (v1 = v2, v2 = 0) can round to either side
         ceiling_first = 0
-        if phi - pi < alpha < phi:
+        if v1 > v2:
             first, start = BALLS, alpha
-        elif 0 < alpha < pi:
+        elif v2 > 0:
             first, start, ceiling_first = CEILING, -alpha, 1
-            if not (phi - pi < start < phi):
+            if not v1 > -v2:  # after the ceiling bang the balls do not close
                 return BangCount(0, 1, first)
         else:
             return BangCount(0, 0, None)

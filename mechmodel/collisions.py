@@ -456,7 +456,10 @@ def collide_to_energy(m1: Any, m2: Any, v1: Any, v2: Any, energy_after: Any) -> 
             f"energy_after must lie between the Ka-runch energy {kept!r} and KE {total!r}, "
             f"got {energy_after!r}"
         )
-    e = _sqrt((energy_after - kept) / available)
+    ratio = (energy_after - kept) / available
+    if ratio > 1:  # energy_after <= kept + available was checked: this is float rounding
+        ratio = 1.0
+    e = _sqrt(ratio)
     rebound = collide(m1, m2, v1, v2, e)
     u = frame.com_velocity
     through = (u + e * frame.velocities[0], u + e * frame.velocities[1])

@@ -497,20 +497,25 @@ def trapped_ball(v_wall: Any, v_ball: Any, gap: Any, bangs: Any) -> TrappedBall:
     """Follow ``bangs`` bangs of the little ball trapped by a big ball closing at ``v_wall``.
 
     The wall is at x = 0, the little ball starts at x = -``gap`` with velocity ``v_ball``
-    (positive: toward the wall) just as the big ball (infinitely heavier, Fig. 6.4) reaches it.
-    Each bang with the big ball is ``collisions.collide`` with an infinite mass; the wall
-    reverses the ball's velocity. Exact with Fraction inputs.
+    (positive: toward the wall) just as the big ball (infinitely heavier, Fig. 6.4), closing at
+    ``v_wall``, reaches it; so the big ball must be the faster, ``v_ball < v_wall``. Each bang
+    with the big ball is ``collisions.collide`` with an infinite mass, which leaves the little
+    ball faster than the big one, 2 v_wall - v; the wall reverses the ball's velocity. Exact
+    with Fraction inputs.
     """
     inputs.positive(v_wall, "v_wall")
     inputs.real(v_ball, "v_ball")
     inputs.positive(gap, "gap")
     n = inputs.count(bangs, "bangs", minimum=1)
+    if not v_ball < v_wall:
+        raise ValueError(
+            f"the big ball (v_wall = {v_wall!r}) does not catch the little ball (v_ball = "
+            f"{v_ball!r}): v_ball must be less than v_wall"
+        )
     t, x_big, velocity = 0 * gap, -gap, v_ball
     speeds, ranges, products, times = [], [], [], []
     for _ in range(n):
         velocity = collide(math.inf, 1, v_wall, velocity).v2
-        if velocity <= 0:
-            raise ValueError("the little ball does not reach the wall")
         x_ball = x_big
         dt = -x_ball / velocity  # to the wall at x = 0
         t, x_big = t + dt, x_big + v_wall * dt

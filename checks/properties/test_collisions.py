@@ -437,6 +437,7 @@ def test_the_reduced_ellipse_gives_back_the_restitution_exactly(
 
 @given(masses(), masses(), velocities(), velocities(), restitutions())
 @example(4.0, 1.0, 60.0, 10.0, 0.0)  # the Ka-runch: both points are the COM point
+@example(10.0, 1.0, 3.0, 0.0, 1.0)  # all the energy: IE + E_COM rounds to just under KE
 def test_both_ka_whump_points_lie_on_the_momentum_line_and_the_reduced_ellipse(
     m1: float, m2: float, v1: float, v2: float, share: float
 ) -> None:

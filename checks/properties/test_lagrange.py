@@ -157,6 +157,38 @@ def test_collision_line_is_normal_to_the_bisector_only_in_v_space(ratio: Fractio
     assert s.momentum_tangent == s.momentum_collision == -1
     assert s.momentum_bisector == 1 / ratio
     assert s.quasi_bisector**2 == s.momentum_bisector
+    assert all(isinstance(x, Fraction) for x in (s.quasi_collision, s.quasi_bisector))
+    # a float slope gives the same lines in floats
+    f = lagrange.ke_ellipse_slopes(-float(ratio))
+    assert _close(f.mass_ratio, float(ratio))
+    assert _close(f.velocity_collision, -float(ratio))
+    assert _close(f.velocity_tangent, -float(ratio))
+    assert _close(f.quasi_collision * f.quasi_bisector, -1.0)
+    assert _close(f.quasi_bisector**2, f.momentum_bisector)
+    assert _close(f.momentum_tangent, -1.0)
+    assert _close(f.momentum_bisector, 1 / float(ratio))
+
+
+@given(st.integers(-4, 4), st.integers(1, 30), exact_velocities())
+@example(1, 2, Fraction(3))  # s = 1/2: E(V) = V^2/2 has no mass (12.5)
+@example(2, 2, Fraction(3))  # s = 1: H(p) = p^2/(2m) (12.4)
+def test_kinetic_energy_in_mass_scaled_coordinates(
+    twice_s: int, root_mass: int, v: Fraction
+) -> None:
+    """m v^2/2 written in u = m^s v is m^(1 - 2s) u^2/2 ((12.1)-(12.5)): the form returned for a
+    multiple s of 1/2 reproduces the kinetic energy exactly at a perfect-square mass m = q^2
+    (where m^s = q^(2s) is rational); s = 1/2 removes the mass, s = 1 divides by it."""
+    s = Fraction(twice_s, 2)
+    form = lagrange.scaled_kinetic_energy(s)
+    m = Fraction(root_mass) ** 2
+    u = Fraction(root_mass) ** twice_s * v  # m^s v
+    energy = form.coefficient * m**form.mass_power.numerator * u**form.coordinate_power
+    assert form.mass_power.denominator == 1
+    assert energy == lagrange.kinetic_energy([m], [v])
+    if root_mass > 1 and v != 0:
+        assert form.mass_power == 1 - 2 * s  # the power is fixed once m != 1
+    with pytest.raises(ValueError, match="multiple of 1/2"):
+        lagrange.scaled_kinetic_energy(s + Fraction(1, 3))
 
 
 @given(st.lists(exact_masses(), min_size=1, max_size=3), st.floats(min_value=0.01, max_value=1e3))

@@ -24,7 +24,7 @@ from checks.properties.strategies import (
     soft_masses,
 )
 from mechmodel import towers
-from mechmodel.collisions import kinetic_energy, momentum
+from mechmodel.collisions import center_of_mass_velocity, kinetic_energy, momentum
 
 pytestmark = pytest.mark.properties
 
@@ -104,13 +104,18 @@ def test_a_column_three_times_heavier_at_each_step_bangs_once_per_ball(
 
 
 @given(moderate_fraction_masses(), fraction_quantities(), st.integers(1, 6), st.integers(1, 6))
+@example(Fraction(1), Fraction(0), 1, 3)  # cars at rest: nothing moves, nothing is lost
+@example(Fraction(1), Fraction(0), 3, 1)
 def test_pile_up_keeps_momentum_and_loses_energy(
     mass: Fraction, speed: Fraction, moving: int, still: int
 ) -> None:
     """Ka-runch pile-ups keep the momentum and lose energy (Figs. 8.5-8.6), exactly: the final
     energy P^2/2M is the incoming one times moving/(moving + still) cars; the slopes run 1:1,
-    2:1, 3:1, ..., their inverses the harmonic progression 1/1, 1/2, 1/3, ...."""
+    2:1, 3:1, ..., their inverses the harmonic progression 1/1, 1/2, 1/3, .... Several moving
+    cars meeting several at rest have many orders (Fig. 8.7) and are refused."""
     if moving > 1 and still > 1:
+        with pytest.raises(ValueError, match="many possible orders"):
+            towers.pile_up(mass, speed, moving, still)
         still = 1
     pile = towers.pile_up(mass, speed, moving, still)
     assert pile.momentum_out == pile.momentum_in == momentum([mass] * moving, [speed] * moving)
@@ -132,9 +137,12 @@ def test_pellet_rocket_momentum_is_zero_sum(n: int, m: Fraction, speed: Fraction
     sum of the boosts m |ve| / M_b: the harmonic series for unit pellets, exactly. Pellet b
     leaves at the exhaust velocity relative to the rocket before blast b (Fig. 8.8), so the
     first pellet to fly forward follows the first blast after which the rocket outruns the
-    exhaust speed; the last balls left in the rocket lead up to the payload."""
+    exhaust speed. The exhaust goes backward: a forward one is refused."""
     rocket = towers.pellet_rocket(n, m, -speed)
     assert all(p == 0 for p in rocket.total_momenta)
+    if speed:
+        with pytest.raises(ValueError, match="backward"):
+            towers.pellet_rocket(n, m, speed)
     for b, v in enumerate(rocket.velocities):
         assert v == speed * sum(Fraction(1, n - 1 - j) for j in range(b + 1))
     assert (rocket.payload_label, rocket.last_blast, rocket.blasts) == (n - 1, n - 2, n - 1)
@@ -198,6 +206,7 @@ def test_inelastic_quadratic_roots_keep_momentum_and_energy(
     assert quad.roots is not None
     assert any(math.isclose(r, float(u1), rel_tol=1e-9, abs_tol=1e-9) for r in quad.roots)
     assert math.isclose(sum(quad.roots) / 2, float(p / (m1 + m2)), rel_tol=1e-9, abs_tol=1e-9)
+    assert quad.v_com == center_of_mass_velocity((m1, m2), (u1, u2))
 
 
 @given(st.lists(soft_masses(), min_size=2, max_size=3), contact_powers())
