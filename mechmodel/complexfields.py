@@ -1043,8 +1043,13 @@ class PolarForm:
     radius_power: float
 
 
-def _polar(func: Callable[[complex], complex]) -> PolarForm:
-    theta, r = 3 / 10, 2.0  # any angle with |k theta| < pi and any radius but 1
+def _polar(func: Callable[[complex], complex], most: int) -> PolarForm:
+    """Read k, s and q off ``func`` = r^q e^(i s k theta), given |k|, |q| <= ``most``.
+
+    The phase is read at theta = 0.3 / most, so that |k theta| <= 0.3 stays clear of the
+    phase's wrap at pi; the power at r = 2^(1/most), where r^q lies in [1/2, 2] (no underflow).
+    """
+    theta, r = 0.3 / most, 2.0 ** (1 / most)
     value = func(cmath.rect(1.0, theta))
     k = cmath.phase(value) / theta
     q = math.log(abs(func(complex(r, 0.0)))) / math.log(r)
@@ -1054,13 +1059,13 @@ def _polar(func: Callable[[complex], complex]) -> PolarForm:
 def inverse_power_polar(power: Any) -> PolarForm:
     """1/z^n = e^(-i n theta)/r^n: the frequency n of cos n theta and sin n theta."""
     n = inputs.count(power, "power", minimum=1)
-    return _polar(lambda z: 1 / z**n)
+    return _polar(lambda z: 1 / z**n, n)
 
 
 def conjugate_inverse_power_polar(power: Any) -> PolarForm:
     """1/z*^n = e^(i n theta)/r^n (the plotted f* of Figs. 10.11, 10.14)."""
     n = inputs.count(power, "power", minimum=1)
-    return _polar(lambda z: 1 / z.conjugate() ** n)
+    return _polar(lambda z: 1 / z.conjugate() ** n, n)
 
 
 def level_line_angle(field_power: Any, x: Any = 7 / 10, y: Any = 4 / 10) -> Numeric:
