@@ -325,10 +325,15 @@ def field_powers() -> st.SearchStrategy[int]:
     return st.integers(-6, 6)
 
 
-def sphere_angles() -> st.SearchStrategy[float]:
+def sphere_angles(*, off_equator: bool = False) -> st.SearchStrategy[float]:
     """A central angle theta of a point on the projection sphere, 0.05 to 3.09 rad (not the
-    poles)."""
-    return st.floats(min_value=0.05, max_value=3.09)
+    poles); with ``off_equator`` also more than 1e-3 from the equator pi/2 (the draws above
+    it are moved 2.5e-3 up, over it)."""
+    if not off_equator:
+        return st.floats(min_value=0.05, max_value=3.09)
+    return st.floats(min_value=0.05, max_value=3.09 - 2.5e-3).map(
+        lambda t: t if t < math.pi / 2 - 1e-3 else t + 2.5e-3
+    )
 
 
 def sphere_diameters() -> st.SearchStrategy[float]:
@@ -456,8 +461,10 @@ def exact_radii() -> st.SearchStrategy[Fraction]:
 
 
 def exact_distinct_radii() -> st.SearchStrategy[tuple[Fraction, Fraction]]:
-    """Two exact unequal semi-axes (a, b) of an ellipse."""
-    return st.tuples(exact_radii(), exact_radii()).filter(lambda ab: ab[0] != ab[1])
+    """Two exact unequal semi-axes (a, b) of an ellipse (a drawn tie becomes (a, 2a))."""
+    return st.tuples(exact_radii(), exact_radii()).map(
+        lambda ab: ab if ab[0] != ab[1] else (ab[0], 2 * ab[0])
+    )
 
 
 def rational_half_angle_tans() -> st.SearchStrategy[Fraction]:
