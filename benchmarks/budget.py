@@ -3,8 +3,7 @@
 Each command runs once untimed first, so Python's bytecode cache (``__pycache__``, where pytest
 also keeps its rewritten test modules) is written as on any checkout after its first run. With
 ``--no-bytecode-cache`` the runs set PYTHONDONTWRITEBYTECODE=1 instead, and every run compiles
-the project and rewrites the tests' assertions anew (on this machine within the run-to-run
-spread: 39.8 against 40.5 s serial).
+the project and rewrites the tests' assertions anew.
 
 Run from the project root:  python benchmarks/budget.py [--runs 5] [--book PATH]
                                                         [--skip-pytest] [--no-bytecode-cache]

@@ -169,28 +169,6 @@ def test_collision_line_is_normal_to_the_bisector_only_in_v_space(ratio: Fractio
     assert _close(f.momentum_bisector, 1 / float(ratio))
 
 
-@given(st.integers(-4, 4), st.integers(1, 30), exact_velocities())
-@example(1, 2, Fraction(3))  # s = 1/2: E(V) = V^2/2 has no mass (12.5)
-@example(2, 2, Fraction(3))  # s = 1: H(p) = p^2/(2m) (12.4)
-def test_kinetic_energy_in_mass_scaled_coordinates(
-    twice_s: int, root_mass: int, v: Fraction
-) -> None:
-    """m v^2/2 written in u = m^s v is m^(1 - 2s) u^2/2 ((12.1)-(12.5)): the form returned for a
-    multiple s of 1/2 reproduces the kinetic energy exactly at a perfect-square mass m = q^2
-    (where m^s = q^(2s) is rational); s = 1/2 removes the mass, s = 1 divides by it."""
-    s = Fraction(twice_s, 2)
-    form = lagrange.scaled_kinetic_energy(s)
-    m = Fraction(root_mass) ** 2
-    u = Fraction(root_mass) ** twice_s * v  # m^s v
-    energy = form.coefficient * m**form.mass_power.numerator * u**form.coordinate_power
-    assert form.mass_power.denominator == 1
-    assert energy == lagrange.kinetic_energy([m], [v])
-    if root_mass > 1 and v != 0:
-        assert form.mass_power == 1 - 2 * s  # the power is fixed once m != 1
-    with pytest.raises(ValueError, match="multiple of 1/2"):
-        lagrange.scaled_kinetic_energy(s + Fraction(1, 3))
-
-
 @given(st.lists(exact_masses(), min_size=1, max_size=3), st.floats(min_value=0.01, max_value=1e3))
 def test_h_ellipse_radius_is_mass_times_l_ellipse_radius(masses: list[Fraction], e: float) -> None:
     """On each axis the H(p) = E ellipse reaches m_k times as far as the L(v) = E ellipse, and
@@ -548,10 +526,12 @@ def test_common_speed_is_the_speed_of_every_fragment(speed: float, angles: list[
     """Fragments flying off with one speed in any directions (exercise 1.12.3) share that speed:
     common_speed returns it at any scale, exactly when every |v| is the same float (3-4-5
     triangles, or all at rest); speeds differing by rounding (1e-12) are one speed, speeds
-    differing by 1% are not, whatever the units."""
+    differing by 1% are not, whatever the units: a list of different speeds is an error, not
+    an average."""
     velocities = [(speed * math.cos(a), speed * math.sin(a)) for a in angles]
     assert _close(lagrange.common_speed(velocities), speed)
     assert lagrange.common_speed([(3, 4), (-4, 3), (0, 5), (5, 0)]) == 5
+    assert lagrange.common_speed([[0, 1], [1, 0], [-(2**-0.5), 2**-0.5]]) == pytest.approx(1)
     assert lagrange.common_speed([(0, 0), (0.0, 0.0)]) == 0
     rounded = lagrange.common_speed([(speed, 0.0), (0.0, speed * (1 + 1e-12))])
     assert _close(rounded, speed, rel=1e-11)
@@ -559,24 +539,21 @@ def test_common_speed_is_the_speed_of_every_fragment(speed: float, angles: list[
         lagrange.common_speed([(speed, 0.0), (0.0, speed * 1.01)])
 
 
-def test_common_speed_rejects_different_speeds() -> None:
-    """The starlet fragments of exercise 1.12.3 share one speed; a list that does not is an
-    error, not an average."""
-    assert lagrange.common_speed([[0, 1], [1, 0], [-(2**-0.5), 2**-0.5]]) == pytest.approx(1)
-    with pytest.raises(ValueError, match="different speeds"):
-        lagrange.common_speed([[0, 1], [1, 1]])
-
-
 @given(st.integers(min_value=-6, max_value=6), exact_masses(), exact_velocities())
+@example(1, Fraction(2), Fraction(3))  # s = 1/2: E(V) = V^2/2 has no mass (12.5)
+@example(2, Fraction(2), Fraction(3))  # s = 1: H(p) = p^2/(2m) (12.4)
 def test_scaled_kinetic_energy_is_the_same_energy(twice_s: int, m: Fraction, v: Fraction) -> None:
     """m v^2 / 2 rewritten in u = m^s v ((12.1), (12.2)) is c u^k m^q with c = 1/2, k = 2 and
     q = 1 - 2s, the same number for every mass and velocity (s = 1/2: E(V) = V^2/2; s = 1:
-    H(p) = p^2/(2m)); checked with s a multiple of 1/2 and m a perfect square, exactly."""
+    H(p) = p^2/(2m)); checked with s a multiple of 1/2 and m a perfect square, exactly. Other
+    s are refused."""
     s = Fraction(twice_s, 2)
     form = lagrange.scaled_kinetic_energy(s)
     root = m  # the mass is root^2, so m^s = root^(2s) stays rational
     mass = root * root
     u = root**twice_s * v
     rebuilt = form.coefficient * u**form.coordinate_power * root ** int(2 * form.mass_power)
-    assert rebuilt == mass * v * v / 2
+    assert rebuilt == lagrange.kinetic_energy([mass], [v]) == mass * v * v / 2
     assert form.mass_power == 1 - 2 * s
+    with pytest.raises(ValueError, match="multiple of 1/2"):
+        lagrange.scaled_kinetic_energy(s + Fraction(1, 3))
