@@ -231,7 +231,7 @@ def test_monster_bongs_add_twice_the_monster_speed(
 ) -> None:
     """Each bong with a closing monster adds 2 V1 to the atom's speed (Figs. 6.5-6.6), exactly,
     and the atom's velocity alternates in sign: from rest 0, 2, -4, 6, ... times V1."""
-    start = data.draw(st.fractions(min_value=-v_monster, max_value=v_monster, max_denominator=12))
+    start = data.draw(rationals(-v_monster, v_monster, 12))
     path = forces.monster_pair(v_monster, start, bongs)
     from_rest = (0, 2 * v_monster, -4 * v_monster, 6 * v_monster)  # the left one hits first
     assert forces.monster_pair(v_monster, 0, 3) == from_rest

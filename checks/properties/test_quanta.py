@@ -15,7 +15,7 @@ import pytest
 from hypothesis import example, given
 from hypothesis import strategies as st
 
-from checks.properties.strategies import masses
+from checks.properties.strategies import masses, rationals
 from mechmodel.quanta import (
     one_ball_state_count,
     photon_energy,
@@ -66,8 +66,8 @@ def test_photon_energy_is_additive_in_frequency(f1: float, f2: float, h: float) 
 
 
 @given(
-    st.fractions(min_value=Fraction(1, 1000), max_value=10**6, max_denominator=1000),
-    st.fractions(min_value=Fraction(1, 1000), max_value=10, max_denominator=1000),
+    rationals(Fraction(1, 1000), 10**6, 1000),
+    rationals(Fraction(1, 1000), 10, 1000),
 )
 def test_photon_energy_over_frequency_is_h_exactly(f: Fraction, h: Fraction) -> None:
     """With exact inputs E / nu is exactly h."""

@@ -152,7 +152,7 @@ def test_compound_interest_halts_just_below_e(m: int) -> None:
 
 
 @given(
-    st.fractions(min_value=0, max_value=3, max_denominator=10),
+    rationals(0, 3, 10),
     st.integers(min_value=1, max_value=24),
     st.integers(min_value=1, max_value=24),
 )
