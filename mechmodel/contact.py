@@ -8,9 +8,10 @@
   work; the parabola's shift under a constant force (7.8).
 - The soft-contact collision integrator: balls (and a floor) that interact only while they
   overlap, with the repulsion F = k y^n of the overlap y (Figs. 7.5-7.7, 8.1). It integrates
-  Newton's equations with scipy's DOP853 and event detection at every touch and release, so
-  that the right-hand side is smooth on each piece; between contacts the balls fly freely and
-  the next touch is found exactly. Results carry their numerical error (``Estimate``).
+  Newton's equations with the 8th-order Dormand-Prince method (DOP853) and stops at every touch
+  and release, so that the right-hand side is smooth on each piece; between contacts the balls
+  fly freely and the next touch is found exactly. Results carry their numerical error
+  (``Estimate``).
 
 Units: SI or the book's scaled units, consistently. Geometry and targets take floats, ints and
 Fractions (exact where only + - * / are used); the integrator works in floats.
@@ -312,7 +313,10 @@ class SoftCollision:
     positions: tuple[tuple[float, ...], ...] = field(repr=False)
 
 
-INTEGRATORS = ("DOP853", "RK45", "Radau", "LSODA")  # solve_ivp methods with event location
+# "DOP853-ode" is Hairer's Fortran DOP853 through scipy.integrate.ode: the same 8th-order
+# Dormand-Prince method as solve_ivp's "DOP853", stepped in compiled code (benchmarks/
+# soft_contact.py compares them all). The others are scipy's solve_ivp methods.
+INTEGRATORS = ("DOP853-ode", "DOP853", "RK45", "Radau", "LSODA")
 # (rtol, step cap as a fraction of the shortest contact): tried in turn until the energy drift
 # is within _ENERGY_GOAL. Near a release the force y^n (n not an integer) has derivatives that
 # grow like y^(n-k), so the embedded error estimate can pass a long step into the edge of a
@@ -320,8 +324,237 @@ INTEGRATORS = ("DOP853", "RK45", "Radau", "LSODA")  # solve_ivp methods with eve
 _LADDER = ((1e-13, 1 / 4), (3e-14, 1 / 4), (3e-14, 1 / 32))
 _ENERGY_GOAL = 1e-11
 _MAX_SEGMENTS = 10_000
+_MAX_STEPS = 1_000_000  # steps of one Fortran run, a guard against a runaway integration
+_NEWTON_STEPS = 30  # 1 to 3 locate a touch or release (2,360 events measured); bisection guards
+_EPS = 2.0**-52  # the spacing of doubles at 1
 _SAFETY = 10  # the tenfold-looser run's change, times this, bounds the error (tested)
 _FLOOR = 1e-12  # relative error floor: rounding and event location over a whole run
+_ODE_FAILURES = {
+    -1: "input is not consistent",
+    -2: "more steps needed",
+    -3: "step size becomes too small",
+    -4: "problem is probably stiff",
+}
+
+
+@dataclass(frozen=True)
+class _Tolerance:
+    """One run's accuracy: relative and absolute tolerance, the step cap, and the time scale
+    (a first step of a thousandth of it; no piece runs longer than 10^4 of it)."""
+
+    rtol: float
+    atol: float
+    step_cap: float
+    scale: float
+
+
+@dataclass
+class _Piece:
+    """One stretch of integration with a fixed set of contacts: where it ended, the contacts
+    that touched or released there (none if it ran out of time), and its sampled path."""
+
+    t: float
+    state: Any
+    flipped: list[int]
+    times: list[float]
+    rows: list[list[float]]
+
+
+def _gap(j: int, s: Any) -> float:
+    """Overlap of contact j in state s (positions, then velocities): the floor's (j = 0) is
+    -x_0, that of balls j-1 and j is x_(j-1) - x_j; positive while they press."""
+    return -s[0] if j == 0 else s[j - 1] - s[j]
+
+
+def _gap_rate(j: int, s: Any, n: int) -> float:
+    """Time derivative of contact j's overlap in state s of n balls."""
+    return -s[n] if j == 0 else s[n + j - 1] - s[n + j]
+
+
+def _ivp_piece(
+    rhs: Any, t: float, state: Any, active: Any, watched: list[int], tol: _Tolerance, method: str
+) -> _Piece:
+    """Integrate with scipy's ``solve_ivp`` until a watched contact touches or releases."""
+    from scipy.integrate import solve_ivp
+
+    def make_event(j: int, sign: float) -> Any:
+        def event(_t: float, s: Any) -> float:
+            y = _gap(j, s)
+            return y if y != 0 else sign * 1e-300  # a touch at the start is not an event
+
+        event.terminal = True
+        event.direction = -1 if sign > 0 else 1
+        return event
+
+    n = len(state) // 2
+    sol = solve_ivp(
+        rhs,
+        (t, t + 1e4 * tol.scale),
+        state,
+        rtol=tol.rtol,
+        atol=tol.atol,
+        events=[make_event(j, 1.0 if active[j] else -1.0) for j in watched],
+        max_step=tol.step_cap,
+        first_step=tol.scale * 1e-3,
+        method=method,
+    )
+    if sol.status < 0:
+        raise ArithmeticError(f"soft collision integration failed: {sol.message}")
+    end_t, end = float(sol.t[-1]), sol.y[:, -1].copy()
+    if sol.status == 1 and len(sol.t) > 2 and end_t > sol.t[-2]:
+        # the event's state comes from the dense-output interpolant, which is less accurate
+        # than a step: redo the last stretch as a step that lands exactly on the event
+        redo = solve_ivp(
+            rhs,
+            (float(sol.t[-2]), end_t),
+            sol.y[:, -2],
+            method=method,
+            rtol=tol.rtol,
+            atol=tol.atol,
+            first_step=end_t - float(sol.t[-2]),
+        )
+        end = redo.y[:, -1].copy()
+    return _Piece(
+        end_t,
+        end,
+        [j for j, hit in zip(watched, sol.t_events, strict=True) if len(hit)],
+        [float(s) for s in sol.t[1:]],
+        [list(col[:n]) for col in sol.y.T[1:]],
+    )
+
+
+def _dop853(rhs: Any, tol: _Tolerance, first_step: float) -> Any:
+    """scipy's Fortran DOP853 integrator for ``rhs`` at the run's tolerances."""
+    from scipy.integrate import ode
+
+    return ode(rhs).set_integrator(
+        "dop853",
+        rtol=tol.rtol,
+        atol=tol.atol,
+        max_step=tol.step_cap,
+        first_step=first_step,
+        nsteps=_MAX_STEPS,
+    )
+
+
+def _run_dop853(solver: Any, t: float, state: Any, until: float) -> None:
+    """Run ``solver`` from (t, state) to ``until`` (or until its solout stops it)."""
+    import warnings
+
+    solver.set_initial_value(state, t)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # scipy warns, then reports the code
+        solver.integrate(until)
+    code = solver.get_return_code()
+    if code < 0:
+        raise ArithmeticError(
+            f"soft collision integration failed: {_ODE_FAILURES.get(code, f'code {code}')}"
+        )
+
+
+def _hermite_root(g0: float, g1: float, d0: float, d1: float) -> float:
+    """The first zero in [0, 1] of the cubic with values g0, g1 and slopes d0, d1 at 0 and 1
+    (per unit of the interval): where a gap that changed sign over a step is estimated to
+    cross zero, from the two ends' positions and velocities alone."""
+    import numpy as np
+
+    cubic = [2 * g0 - 2 * g1 + d0 + d1, -3 * g0 + 3 * g1 - 2 * d0 - d1, d0, g0]
+    inside = [r.real for r in np.roots(cubic) if abs(r.imag) < 1e-9 and 0 <= r.real <= 1]
+    return min(inside) if inside else g0 / (g0 - g1)
+
+
+def _ode_piece(
+    rhs: Any, t: float, state: Any, active: Any, watched: list[int], tol: _Tolerance
+) -> _Piece:
+    """Integrate with the Fortran DOP853 until a watched contact touches or releases.
+
+    After every step the watched overlaps are checked for a sign change (an active contact
+    released, an inactive one touching). The first step over which one changed is taken apart:
+    the crossing is estimated from a cubic through both ends, then found by Newton's method on
+    the true trajectory, each iterate a fresh integration from the step's start, so that the
+    state at the event comes from a step, not from an interpolant.
+    """
+    n = len(state) // 2
+    side = {j: 1.0 if active[j] else -1.0 for j in watched}  # the sign before the event
+
+    def signed(j: int, s: Any) -> float:
+        y = _gap(j, s)
+        return y if y != 0 else side[j] * 1e-300  # touching, not yet across
+
+    def across(j: int, y: float) -> bool:
+        return y * side[j] < 0
+
+    last = [t, state, [signed(j, state) for j in watched]]
+    stop: list[Any] = []
+    times: list[float] = []
+    rows: list[list[float]] = []
+
+    def solout(tk: float, yk: Any) -> int:
+        if tk == last[0]:
+            return 0  # the call at the start
+        now = [signed(j, yk) for j in watched]
+        hits = [
+            j
+            for j, before, y in zip(watched, last[2], now, strict=True)
+            if across(j, y) and not across(j, before)  # a crossing, not a start already across
+        ]
+        if hits:
+            stop.append(hits)
+            return -1
+        last[:] = [tk, yk.copy(), now]
+        times.append(tk)
+        rows.append(list(yk[:n]))
+        return 0
+
+    solver = _dop853(rhs, tol, tol.scale * 1e-3)
+    solver.set_solout(solout)
+    _run_dop853(solver, t, state, t + 1e4 * tol.scale)
+    if not stop:
+        return _Piece(float(solver.t), solver.y.copy(), [], times, rows)
+    ta, ya = last[0], last[1]
+    tb, yb = float(solver.t), solver.y.copy()
+
+    def state_at(when: float) -> Any:
+        if when <= ta:
+            return ya
+        step = _dop853(rhs, tol, when - ta)
+        _run_dop853(step, ta, ya, when)
+        return step.y.copy()
+
+    h = tb - ta
+    roots = []
+    for j in stop[0]:
+        g0, g1 = _gap(j, ya), _gap(j, yb)
+        u = _hermite_root(g0, g1, _gap_rate(j, ya, n) * h, _gap_rate(j, yb, n) * h)
+        when, low, high = ta + u * h, ta, tb
+        for _ in range(_NEWTON_STEPS):
+            s = state_at(when)
+            y, rate = _gap(j, s), _gap_rate(j, s, n)
+            if across(j, y):
+                high = when
+            elif y != 0:
+                low = when
+            follow = when - y / rate if rate else (low + high) / 2
+            if not low <= follow <= high:
+                follow = (low + high) / 2
+            # done when the overlap is zero to the rounding of the positions it is the
+            # difference of, or the time cannot move by more than its own rounding
+            resolution = 4 * _EPS * (abs(s[0]) if j == 0 else abs(s[j - 1]) + abs(s[j]))
+            if abs(y) <= resolution or abs(follow - when) <= 2 * _EPS * abs(when):
+                break
+            when = follow
+        else:
+            raise ArithmeticError(f"soft collision: contact {j}'s touch or release not located")
+        roots.append((when, j, s))
+    first = min(when for when, _, _ in roots)
+    end = next(s for when, _, s in roots if when == first)
+    return _Piece(
+        first,
+        end,
+        [j for when, j, _ in roots if when == first],
+        [*times, first],
+        [*rows, list(end[:n])],
+    )
 
 
 def _integrate(
@@ -337,7 +570,6 @@ def _integrate(
 ) -> tuple[list[float], float, int, float, list[float], list[list[float]]]:
     """One run of the piecewise integration; see ``soft_collision``."""
     import numpy as np
-    from scipy.integrate import solve_ivp
 
     m = np.asarray(masses, float)
     n = len(m)
@@ -370,37 +602,34 @@ def _integrate(
     e0 = energy(x, v, active)
     fastest = 2 * math.sqrt(2 * e0 / float(m.min())) if e0 > 0 else speed
     deepest = ((power + 1) * float(m.min()) * fastest**2 / (4 * strength)) ** (1 / (power + 1))
-    step_cap = 2 * deepest / fastest * cap_fraction
+    tol = _Tolerance(
+        rtol, rtol * 1e-3 * max(reach, speed), 2 * deepest / fastest * cap_fraction, scale
+    )
 
     mass = [float(mk) for mk in m]
-    on = active  # the contacts in force during the current piece (updated between pieces)
+    on = active.tolist()  # the contacts in force during the current piece (set before each)
 
     def rhs(_t: float, s: Any) -> list[float]:
-        # plain floats: for a few balls this is several times faster than numpy
-        pos = s[:n].tolist()
+        # plain floats, one list: for a few balls this is several times faster than numpy
+        rates = s.tolist()
         acc = [0.0] * n
-        if on[0]:
-            acc[0] += strength * max(-pos[0], 0.0) ** power  # the floor pushes ball 0 up
+        if on[0] and rates[0] < 0:
+            acc[0] = strength * (-rates[0]) ** power  # the floor pushes ball 0 up
         for j in range(1, n):
             if on[j]:
-                f = strength * max(pos[j - 1] - pos[j], 0.0) ** power
-                acc[j - 1] -= f  # contact j pushes ball j-1 down and ball j up
-                acc[j] += f
-        return s[n:].tolist() + [a / mk for a, mk in zip(acc, mass, strict=True)]
+                overlap = rates[j - 1] - rates[j]
+                if overlap > 0:
+                    f = strength * overlap**power
+                    acc[j - 1] -= f  # contact j pushes ball j-1 down and ball j up
+                    acc[j] += f
+        rates[:n] = rates[n:]  # d(position)/dt = velocity
+        rates[n:] = [a / mk for a, mk in zip(acc, mass, strict=True)]
+        return rates
 
-    def make_event(j: int, sign: float) -> Any:
-        def event(_t: float, s: Any) -> float:
-            y = -s[0] if j == 0 else s[j - 1] - s[j]
-            return y if y != 0 else sign * 1e-300  # a touch at the start is not an event
-
-        event.terminal = True
-        event.direction = -1 if sign > 0 else 1
-        return event
-
-    atol = rtol * 1e-3 * max(reach, speed)
     t, state = 0.0, np.concatenate((x, v))
     times, path = [0.0], [list(x)]
     touches = 0
+    watched = list(range(lowest, n))
     for _ in range(_MAX_SEGMENTS):
         x, v = state[:n], state[n:]
         y, r = overlaps(x), rates(v)
@@ -419,40 +648,17 @@ def _integrate(
             times.append(t)
             path.append(list(x))
             continue
-        events = [make_event(j, 1.0 if active[j] else -1.0) for j in range(lowest, n)]
-        sol = solve_ivp(
-            rhs,
-            (t, t + 1e4 * scale),
-            state,
-            rtol=rtol,
-            atol=atol,
-            events=events,
-            max_step=step_cap,
-            first_step=scale * 1e-3,
-            method=method,
-        )
-        if sol.status < 0:
-            raise ArithmeticError(f"soft collision integration failed: {sol.message}")
-        t, state = float(sol.t[-1]), sol.y[:, -1].copy()
-        if sol.status == 1 and len(sol.t) > 2 and t > sol.t[-2]:
-            # the event's state comes from the dense-output interpolant, which is less accurate
-            # than a step: redo the last stretch as a step that lands exactly on the event
-            redo = solve_ivp(
-                rhs,
-                (float(sol.t[-2]), t),
-                sol.y[:, -2],
-                method=method,
-                rtol=rtol,
-                atol=atol,
-                first_step=t - float(sol.t[-2]),
-            )
-            state = redo.y[:, -1].copy()
-        times.extend(float(s) for s in sol.t[1:])
-        path.extend(list(col[:n]) for col in sol.y.T[1:])
-        for k, hit in enumerate(sol.t_events):
-            if len(hit):
-                active[lowest + k] = not active[lowest + k]
-                touches += 1
+        on[:] = active.tolist()
+        if method == "DOP853-ode":
+            piece = _ode_piece(rhs, t, state, active, watched, tol)
+        else:
+            piece = _ivp_piece(rhs, t, state, active, watched, tol, method)
+        t, state = piece.t, piece.state
+        times.extend(piece.times)
+        path.extend(piece.rows)
+        for j in piece.flipped:
+            active[j] = not active[j]
+            touches += 1
     else:
         raise ArithmeticError("soft collision did not end within the segment limit")
     x, v = state[:n], state[n:]
@@ -467,7 +673,7 @@ def soft_collision(
     power: Any,
     strength: Any = 1,
     floor: bool = False,
-    method: str = "DOP853",
+    method: str = "DOP853-ode",
 ) -> SoftCollision:
     """Collide balls on a line that repel with F = strength * y^power while they overlap by y.
 
@@ -481,10 +687,12 @@ def soft_collision(
     a relative tolerance of 1e-13 and, while the energy drifts by more than 1e-11 (relative),
     again with tighter tolerances and shorter steps; the velocities' errors are ten times the
     change under a tenfold looser tolerance, plus the energy drift and a floor of 1e-12, both
-    times the speeds involved. ``method`` is scipy's ``solve_ivp``
-    method; DOP853 (8th-order Dormand-Prince), the default, was the fastest to reach this
-    accuracy on the book's collisions (benchmarks/soft_contact.py compares it with RK45, Radau
-    and LSODA).
+    times the speeds involved. ``method`` is one of ``INTEGRATORS``: the default "DOP853-ode",
+    Hairer's Fortran DOP853 (8th-order Dormand-Prince) through ``scipy.integrate.ode``, with
+    each touch and release located by Newton's method on the true trajectory, or one of scipy's
+    ``solve_ivp`` methods ("DOP853", "RK45", "Radau", "LSODA") with its event location. The
+    Fortran DOP853 reaches this accuracy in about half the time of the next fastest
+    (benchmarks/soft_contact.py compares them).
     """
     if method not in INTEGRATORS:
         raise ValueError(f"method must be one of {INTEGRATORS}, got {method!r}")
