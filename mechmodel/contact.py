@@ -591,15 +591,19 @@ def _integrate(
     y0, r0 = overlaps(x), rates(v)
     active = (y0 > 0) | ((y0 == 0) & (r0 >= 0))
     active[:lowest] = False
-    # time scale: the contact time of the lightest ball at the largest closing speed
-    speed = max(float(np.max(np.abs(r0))), 1e-300)
+    e0 = energy(x, v, active)
+    # speed scale: the largest closing speed or, for balls released pressed together at rest,
+    # the speed the stored energy would give the lightest ball
+    speed = float(np.max(np.abs(r0))) or math.sqrt(2 * e0 / float(m.min()))
+    if speed == 0:  # nothing moves and nothing is stored: nothing happens
+        return [0.0] * n, 0.0, 0, 0.0, [0.0], [list(x)]
+    # time scale: the contact time of the lightest ball at that speed
     reach = ((power + 1) * float(m.min()) * speed * speed / (2 * strength)) ** (1 / (power + 1))
     scale = reach / speed
     # the shortest contact possible: no pair closes faster than twice the top speed the energy
     # allows, 2 sqrt(2 E / m_min), and its reduced mass is at least m_min / 2; such a pair stays
     # in touch for at least 2 y_max / r. Steps are capped at a fraction of that (a quarter at
     # most), so no contact can open and close between two steps unseen.
-    e0 = energy(x, v, active)
     fastest = 2 * math.sqrt(2 * e0 / float(m.min())) if e0 > 0 else speed
     deepest = ((power + 1) * float(m.min()) * fastest**2 / (4 * strength)) ** (1 / (power + 1))
     tol = _Tolerance(
@@ -633,10 +637,10 @@ def _integrate(
     for _ in range(_MAX_SEGMENTS):
         x, v = state[:n], state[n:]
         y, r = overlaps(x), rates(v)
+        closing = (r > 0) & (np.arange(n) >= lowest)
+        if not closing.any() and not (active & (y > 0)).any():
+            break  # nothing presses and nothing closes (balls touching at rest stay so)
         if not active.any():
-            closing = (r > 0) & (np.arange(n) >= lowest)
-            if not closing.any():
-                break
             waits = np.where(closing, -y / np.where(closing, r, 1.0), np.inf)
             j = int(np.argmin(waits))
             wait = max(float(waits[j]), 0.0)

@@ -235,8 +235,46 @@ def test_every_integrator_gives_the_elastic_map_within_its_error(method: str) ->
     for start in ([0, 0], [0, 0.5]):
         run = contact.soft_collision([7, 1], start, [1, 0], 1, method=method)
         assert run.energy_error <= SOFT_ENERGY_DRIFT
+        _check_record(run, start, start[1] + _contact_time(7, 1, 1, 1))
         for got, want in zip(run.velocities, expected, strict=True):
             assert abs(got.value - want) <= got.error <= 1e-8
+
+
+@given(soft_masses(), soft_masses(), contact_powers(), st.floats(min_value=0.01, max_value=2))
+def test_balls_released_pressed_together_share_the_stored_energy(
+    m1: float, m2: float, power: float, overlap: float
+) -> None:
+    """Two balls at rest, pressed together by an overlap y0, fly apart with the energy stored
+    in the contact, k y0^(n+1) / (n+1) (the area under F = k y^n), and no momentum: each
+    leaves with the share of that energy the other's mass gives it. They only part (one
+    event), after the quarter of a contact time that y takes to fall from y0 to 0."""
+    run = contact.soft_collision([m1, m2], [overlap, 0.0], [0.0, 0.0], power)
+    stored = overlap ** (power + 1) / (power + 1)
+    leaving = (
+        -math.sqrt(2 * stored * m2 / (m1 * (m1 + m2))),
+        math.sqrt(2 * stored * m1 / (m2 * (m1 + m2))),
+    )
+    assert run.touches == 1
+    assert run.energy_error <= SOFT_ENERGY_DRIFT
+    for got, want in zip(run.velocities, leaving, strict=True):
+        assert abs(got.value - want) <= got.error
+    closing = leaving[1] - leaving[0]  # the speed at which they would meet again
+    _check_record(run, [overlap, 0.0], _contact_time(m1, m2, closing, power) / 2)
+
+
+@given(soft_masses(), soft_masses(), closing_speeds(), contact_powers())
+def test_touching_balls_that_do_not_close_are_left_alone(
+    m1: float, m2: float, speed: float, power: float
+) -> None:
+    """Balls that touch without overlap and move together (or apart, or up off the floor)
+    exert no force: the run ends at once with their velocities unchanged and no touch."""
+    for run, velocities in (
+        (contact.soft_collision([m1, m2], [0.0, 0.0], [speed, speed], power), [speed, speed]),
+        (contact.soft_collision([m1, m2], [0.0, 0.0], [-speed, 0.0], power), [-speed, 0.0]),
+        (contact.soft_collision([m1, m2], [0.0, 0.0], [speed] * 2, power, floor=True), [speed] * 2),
+    ):
+        assert (run.touches, run.duration, run.energy_error) == (0, 0.0, 0.0)
+        assert [e.value for e in run.velocities] == velocities
 
 
 def test_a_drifting_run_is_redone_down_the_ladder(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -271,6 +309,8 @@ def test_both_dop853_codes_agree_on_a_tower(power: float) -> None:
     ]
     fortran, python = runs
     assert fortran.touches == python.touches
+    for run in runs:
+        _check_record(run, [0.0, 0.0, 0.0], fortran.duration)
     assert math.isclose(fortran.duration, python.duration, rel_tol=1e-9)
     for a, b in zip(fortran.velocities, python.velocities, strict=True):
         assert abs(a.value - b.value) <= a.error + b.error
