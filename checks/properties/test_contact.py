@@ -278,10 +278,11 @@ def test_touching_balls_that_do_not_close_are_left_alone(
 
 
 def test_a_drifting_run_is_redone_down_the_ladder(monkeypatch: pytest.MonkeyPatch) -> None:
-    """While a run's energy drifts by more than the goal it is redone at each tighter rung of the
-    ladder (tolerance, step cap) in turn; the error estimate then comes from the last rung and
-    a run ten times looser. With an unreachable goal every rung runs, and the result still
-    meets the elastic map (the 7:1 quartic pair of Fig. 7.6, started apart)."""
+    """A run whose energy keeps within the goal is made once, and once ten times looser for its
+    error. While a run's energy drifts by more than the goal it is redone at each tighter rung
+    of the ladder (tolerance, step cap) in turn; the error estimate then comes from the last
+    rung and a run ten times looser. With an unreachable goal every rung runs, and the result
+    still meets the elastic map (the 7:1 quartic pair of Fig. 7.6, started apart)."""
     rungs = []
     integrate = contact._integrate
 
@@ -289,8 +290,12 @@ def test_a_drifting_run_is_redone_down_the_ladder(monkeypatch: pytest.MonkeyPatc
         rungs.append((rtol, cap_fraction))
         return integrate(*args, rtol=rtol, cap_fraction=cap_fraction, **kwargs)
 
-    monkeypatch.setattr(contact, "_ENERGY_GOAL", 0.0)
     monkeypatch.setattr(contact, "_integrate", spy)
+    first_rtol, first_cap = contact._LADDER[0]
+    contact.soft_collision([7, 1], [0, 0.5], [1, 0], 4)
+    assert rungs == [(first_rtol, first_cap), (10 * first_rtol, first_cap)]  # within the goal
+    rungs.clear()
+    monkeypatch.setattr(contact, "_ENERGY_GOAL", 0.0)
     run = contact.soft_collision([7, 1], [0, 0.5], [1, 0], 4)
     last_rtol, last_cap = contact._LADDER[-1]
     assert rungs == [*contact._LADDER, (10 * last_rtol, last_cap)]
