@@ -40,6 +40,7 @@ from typing import Any
 import numpy as np
 
 from mechmodel import inputs
+from mechmodel.exact import exact_sqrt
 
 # -------------------------------------------------------------------------------------------
 # Exact Laurent polynomials in named variables
@@ -405,7 +406,7 @@ def ke_ellipse_slopes(collision_slope: Any) -> EllipseSlopes:
     inputs.positive(ratio, "mass ratio m1/m2 (minus the collision slope)")
     exact = isinstance(ratio, int | Fraction)
     m1, m2 = (Fraction(ratio), Fraction(1)) if exact else (ratio, 1.0)
-    r1, r2 = _exact_sqrt(m1), _exact_sqrt(m2)
+    r1, r2 = exact_sqrt(m1), exact_sqrt(m2)
 
     def slope(dx: Any, dy: Any) -> Any:
         return dy / dx
@@ -1143,17 +1144,6 @@ def _lib(*values: Any) -> Any:
     import mpmath
 
     return mpmath if any(isinstance(v, mpmath.mpf) for v in values) else math
-
-
-def _exact_sqrt(x: Any) -> Any:
-    """sqrt(x): an exact Fraction for a perfect-square int or Fraction, else a float."""
-    if isinstance(x, int | Fraction):
-        f = Fraction(x)
-        if f >= 0:
-            n, d = math.isqrt(f.numerator), math.isqrt(f.denominator)
-            if n * n == f.numerator and d * d == f.denominator:
-                return Fraction(n, d)
-    return math.sqrt(x)
 
 
 def _sqrt(x: Any) -> Any:

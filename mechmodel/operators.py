@@ -23,6 +23,7 @@ from typing import Any
 from mechmodel import inputs
 from mechmodel.bangs import ceiling_bounce, floor_bounce
 from mechmodel.collisions import collide
+from mechmodel.exact import exact_sqrt
 
 Matrix = tuple[tuple[Any, Any], tuple[Any, Any]]
 
@@ -511,12 +512,6 @@ def clock_energy_share(ticks: int) -> float:
 
 
 # -- integral right triangles (Fig. 5.2(f)) ---------------------------------------------------
-def _exact_sqrt(x: Any) -> Any:
-    if isinstance(x, int) and x >= 0 and math.isqrt(x) ** 2 == x:
-        return math.isqrt(x)
-    return math.sqrt(x)
-
-
 @dataclass(frozen=True)
 class RightTriangle:
     """The bang triangle: altitude 2 sqrt(m1 m2), base m1 - m2, hypotenuse m1 + m2 (5.10a)."""
@@ -535,7 +530,7 @@ def integral_right_triangle(m1: Any, m2: Any) -> RightTriangle:
     """
     inputs.mass(m1, "m1")
     inputs.mass(m2, "m2")
-    altitude = 2 * _exact_sqrt(m1 * m2)
+    altitude = 2 * exact_sqrt(m1 * m2)
     return RightTriangle(altitude, m1 - m2, m1 + m2, altitude**2 / (m1 * m2))
 
 
@@ -543,7 +538,7 @@ def hypotenuse(a: Any, b: Any) -> Any:
     """The hypotenuse sqrt(a^2 + b^2) of a right triangle (an integer where it is one)."""
     inputs.positive(a, "a")
     inputs.positive(b, "b")
-    return _exact_sqrt(a * a + b * b)
+    return exact_sqrt(a * a + b * b)
 
 
 def perfect_square(root: int) -> int:

@@ -29,26 +29,13 @@ from fractions import Fraction
 from typing import Any
 
 from mechmodel import inputs
+from mechmodel.exact import exact_sqrt
 
 Vector = tuple[Any, Any]
 Matrix = tuple[tuple[Any, Any], tuple[Any, Any]]
 
 
 # -- small exact helpers ----------------------------------------------------------------------
-def exact_sqrt(x: Any) -> Any:
-    """Square root of x >= 0: an exact ``Fraction`` (or ``int``) when x is a rational perfect
-    square, else a float."""
-    inputs.real(x, "x")
-    if x < 0:
-        raise ValueError(f"no real square root of {x!r}")
-    if isinstance(x, int | Fraction):
-        f = Fraction(x)
-        rn, rd = math.isqrt(f.numerator), math.isqrt(f.denominator)
-        if rn * rn == f.numerator and rd * rd == f.denominator:
-            return rn if rd == 1 else Fraction(rn, rd)
-    return math.sqrt(x)
-
-
 def dot(u: Sequence[Any], v: Sequence[Any]) -> Any:
     """The dot product u.v of two plane vectors."""
     return u[0] * v[0] + u[1] * v[1]

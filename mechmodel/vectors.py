@@ -23,6 +23,7 @@ from fractions import Fraction
 from typing import Any
 
 from mechmodel import inputs
+from mechmodel.exact import exact_sqrt
 
 DIMENSIONS = 3
 
@@ -182,15 +183,6 @@ def heron_area_squared(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> 
     return numerator / 16
 
 
-def _exact_sqrt(x: Any) -> Any:
-    if isinstance(x, int | Fraction):
-        f = Fraction(x)
-        n, d = math.isqrt(f.numerator), math.isqrt(f.denominator)
-        if n * n == f.numerator and d * d == f.denominator:
-            return Fraction(n, d)
-    return math.sqrt(x)
-
-
 @dataclass(frozen=True)
 class AreaRatios:
     """Areas of the figures of Fig. 1.A.2 in units of |A x B|."""
@@ -215,7 +207,7 @@ def area_ratios(a: Sequence[Any], b: Sequence[Any]) -> AreaRatios:
     tip_diff = [a[0] - b[0], a[1] - b[1]]
     parallelogram_sq = 4 * heron_area_squared(origin, a, tip_sum)  # two congruent triangles
     return AreaRatios(
-        parallelogram=_exact_sqrt(parallelogram_sq / cross_ab**2),
-        sum_triangle=_exact_sqrt(heron_area_squared(origin, a, tip_sum) / cross_ab**2),
-        difference_triangle=_exact_sqrt(heron_area_squared(origin, a, tip_diff) / cross_ab**2),
+        parallelogram=exact_sqrt(parallelogram_sq / cross_ab**2),
+        sum_triangle=exact_sqrt(heron_area_squared(origin, a, tip_sum) / cross_ab**2),
+        difference_triangle=exact_sqrt(heron_area_squared(origin, a, tip_diff) / cross_ab**2),
     )

@@ -1,0 +1,32 @@
+"""Exact arithmetic shared by the models: a square root that stays rational where it can.
+
+A model given ``int`` or ``fractions.Fraction`` inputs stays exact through + - * /; a square root
+stays exact too where its argument is a rational perfect square: the integer-sided bang triangle
+of Fig. 5.2(f), perfect-square mass ratios (chapter 12), the area ratios of Fig. 1.A.2, and the
+frequencies and radii of rational oscillators (chapter 11).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from typing import Any
+
+from mechmodel import inputs
+
+
+def exact_sqrt(x: Any) -> Any:
+    """The square root of x >= 0: an ``int`` for an int perfect square, a ``Fraction`` for a
+    Fraction whose numerator and denominator are perfect squares, else a float."""
+    inputs.real(x, "x")
+    if x < 0:
+        raise ValueError(f"no real square root of {x!r}")
+    if isinstance(x, int):
+        root = math.isqrt(x)
+        if root * root == x:
+            return root
+    elif isinstance(x, Fraction):
+        top, bottom = math.isqrt(x.numerator), math.isqrt(x.denominator)
+        if top * top == x.numerator and bottom * bottom == x.denominator:
+            return Fraction(top, bottom)
+    return math.sqrt(x)
