@@ -247,7 +247,8 @@ def test_balls_released_pressed_together_share_the_stored_energy(
     """Two balls at rest, pressed together by an overlap y0, fly apart with the energy stored
     in the contact, k y0^(n+1) / (n+1) (the area under F = k y^n), and no momentum: each
     leaves with the share of that energy the other's mass gives it. They only part (one
-    event), after the quarter of a contact time that y takes to fall from y0 to 0."""
+    event), after half the contact time of a bang at the speed they part with: y falls from
+    its deepest, y0, to 0."""
     run = contact.soft_collision([m1, m2], [overlap, 0.0], [0.0, 0.0], power)
     stored = overlap ** (power + 1) / (power + 1)
     leaving = (
