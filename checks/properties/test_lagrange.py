@@ -190,7 +190,8 @@ def test_each_trajectory_touches_the_envelope_once_where_the_model_says(
 ) -> None:
     """y_env(x) - y(x) = (g / 2 v0^2)(x tan a - v0^2/g)^2 >= 0 (from (12.14c) and (12.17)): every
     trajectory lies under the envelope and touches it at exactly one point, x = v0^2/(g tan a)
-    (12.16c), where the two curves also share their slope (Figs. 12.5-12.6)."""
+    (12.16c), where the two curves also share their slope (Figs. 12.5-12.6). The horizontal
+    launch never touches it: a ValueError."""
     xc, yc = lagrange.contact_point(v0, alpha, g)
     x = xc * (1 + offset)
     gap = lagrange.envelope_height(x, v0, g) - lagrange.trajectory_height(x, v0, alpha, g)
@@ -207,6 +208,8 @@ def test_each_trajectory_touches_the_envelope_once_where_the_model_says(
         + lagrange.trajectory_height(xc - h, v0, alpha, g)
     ) / (2 * h)
     assert abs(slope_gap) <= 1e-6 * (1 + math.tan(alpha) + g * xc / v0**2)
+    with pytest.raises(ValueError, match="horizontal"):  # y = -g x^2/2v0^2 stays below it
+        lagrange.contact_point(v0, 0.0, g)
 
 
 @given(launch_speeds(), launch_angles(), gravities(), st.floats(min_value=0, max_value=5))
