@@ -695,7 +695,7 @@ def soft_collision(
     Hairer's Fortran DOP853 (8th-order Dormand-Prince) through ``scipy.integrate.ode``, with
     each touch and release located by Newton's method on the true trajectory, or one of scipy's
     ``solve_ivp`` methods ("DOP853", "RK45", "Radau", "LSODA") with its event location. The
-    Fortran DOP853 reaches this accuracy in about half the time of the next fastest
+    Fortran DOP853 reaches this accuracy in a third to a half of the time of the next fastest
     (benchmarks/soft_contact.py compares them).
     """
     if method not in INTEGRATORS:
