@@ -366,6 +366,14 @@ def _gap(j: int, s: Any) -> float:
     return -s[0] if j == 0 else s[j - 1] - s[j]
 
 
+def _signed_gap(j: int, s: Any, side: float) -> float:
+    """Contact j's overlap in state s for spotting a touch or release: an overlap of exactly 0
+    counts as still on ``side`` (the sign before the event: +1 for a contact in force, -1 for
+    one open), so that touching at the start of a piece is not an event."""
+    y = _gap(j, s)
+    return y if y != 0 else side * 1e-300
+
+
 def _gap_rate(j: int, s: Any, n: int) -> float:
     """Time derivative of contact j's overlap in state s of n balls."""
     return -s[n] if j == 0 else s[n + j - 1] - s[n + j]
@@ -377,13 +385,12 @@ def _ivp_piece(
     """Integrate with scipy's ``solve_ivp`` until a watched contact touches or releases."""
     from scipy.integrate import solve_ivp
 
-    def make_event(j: int, sign: float) -> Any:
+    def make_event(j: int, side: float) -> Any:
         def event(_t: float, s: Any) -> float:
-            y = _gap(j, s)
-            return y if y != 0 else sign * 1e-300  # a touch at the start is not an event
+            return _signed_gap(j, s, side)
 
         event.terminal = True
-        event.direction = -1 if sign > 0 else 1
+        event.direction = -1 if side > 0 else 1
         return event
 
     n = len(state) // 2
@@ -478,8 +485,7 @@ def _ode_piece(
     side = {j: 1.0 if active[j] else -1.0 for j in watched}  # the sign before the event
 
     def signed(j: int, s: Any) -> float:
-        y = _gap(j, s)
-        return y if y != 0 else side[j] * 1e-300  # touching, not yet across
+        return _signed_gap(j, s, side[j])
 
     def across(j: int, y: float) -> bool:
         return y * side[j] < 0
@@ -596,7 +602,7 @@ def _integrate(
     # the speed the stored energy would give the lightest ball
     speed = float(np.max(np.abs(r0))) or math.sqrt(2 * e0 / float(m.min()))
     if speed == 0:  # nothing moves and nothing is stored: nothing happens
-        return [0.0] * n, 0.0, 0, 0.0, [0.0], [list(x)]
+        return [float(w) for w in v], 0.0, 0, 0.0, [0.0], [list(x)]
     # time scale: the contact time of the lightest ball at that speed
     reach = ((power + 1) * float(m.min()) * speed * speed / (2 * strength)) ** (1 / (power + 1))
     scale = reach / speed
