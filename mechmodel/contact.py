@@ -541,13 +541,16 @@ def _ode_piece(
             elif y != 0:
                 low = when
             follow = when - y / rate if rate else (low + high) / 2
-            if not low <= follow <= high:
-                follow = (low + high) / 2
             # done when the overlap is zero to the rounding of the positions it is the
-            # difference of, or the time cannot move by more than its own rounding
+            # difference of, or Newton cannot move the time by more than its own rounding, or
+            # the bracket has shrunk to a few roundings of the time (there the integrations'
+            # rounding noise can outweigh the overlap, and Newton may hop between the ends)
             resolution = 4 * _EPS * (abs(s[0]) if j == 0 else abs(s[j - 1]) + abs(s[j]))
-            if abs(y) <= resolution or abs(follow - when) <= 2 * _EPS * abs(when):
+            rounding = 2 * _EPS * abs(when)
+            if abs(y) <= resolution or abs(follow - when) <= rounding or high - low <= 4 * rounding:
                 break
+            if not low < follow < high:  # outside the bracket, or back at an end: bisect
+                follow = (low + high) / 2
             when = follow
         else:
             raise ArithmeticError(f"soft collision: contact {j}'s touch or release not located")

@@ -210,6 +210,9 @@ def test_inelastic_quadratic_roots_keep_momentum_and_energy(
 
 
 @given(st.lists(soft_masses(), min_size=2, max_size=3), contact_powers())
+# Newton once hopped between two ends three roundings apart, where the integrations' own
+# noise outweighed the overlap, and gave up ("touch or release not located")
+@example([2.525782766927532, 0.8749282611017211], 1.1689268825665489)
 def test_zero_gap_tower_keeps_energy_scales_and_stays_under_inf_limit(
     masses: list[float], power: float
 ) -> None:
