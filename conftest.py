@@ -35,6 +35,7 @@ from reference.evaluation import Evaluation, evaluate_catalog
 from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
+from reports.background import BackgroundReport
 
 IN_CI = os.environ.get("CI", "").lower() == "true"
 MIN_EXAMPLES = 50  # the ci profile's floor: speed never hollows a property out
@@ -52,6 +53,8 @@ _BOOK = pytest.StashKey[Book | None]()
 _NO_BOOK = pytest.StashKey[str]()
 _CATALOG = pytest.StashKey[Catalog]()
 _EVALUATION = pytest.StashKey[Evaluation]()
+_SCAN = pytest.StashKey[ScanResult]()
+_REPORT = pytest.StashKey[BackgroundReport]()
 _WORKER_VERDICTS = pytest.StashKey[Counter[str]]()
 _VERDICTS_KEY = "bangcheck_verdicts"  # in an xdist worker's workeroutput
 
@@ -118,8 +121,37 @@ def _freeze_long_lived() -> None:
 
 
 def pytest_collection_finish(session: pytest.Session) -> None:
-    del session
+    _start_report_in_background(session)
     _freeze_long_lived()
+
+
+def _start_report_in_background(session: pytest.Session) -> None:
+    """In a serial run with tests of the whole report and property tests, start building the
+    whole report in a forked process now, on the core the tests leave idle; the report and
+    browser tests, which run after the long property suite, then collect it. Not under xdist:
+    there both cores are busy, and a worker does not know whether it will get the report
+    tests. Without property tests to hide behind, the report is built when first needed, its
+    figures drawn on every core."""
+    config = session.config
+    if hasattr(config, "workerinput") or config.stash.get(_BOOK, None) is None:
+        return
+    items = session.items
+    if not (
+        any("report_dir" in getattr(item, "fixturenames", ()) for item in items)
+        and any(item.get_closest_marker("properties") is not None for item in items)
+        and BackgroundReport.available()
+    ):
+        return
+    evaluation = evaluation_of(config)
+    assert evaluation is not None
+    config.stash[_REPORT] = BackgroundReport(evaluation, scan_of(config), catalog_of(config))
+
+
+def pytest_unconfigure(config: pytest.Config) -> None:
+    """A background report build still running (the session ended early) is stopped."""
+    pending = config.stash.get(_REPORT, None)
+    if pending is not None:
+        pending.stop()
 
 
 @pytest.fixture(scope="session")
@@ -147,22 +179,42 @@ def evaluation(pytestconfig: pytest.Config, book: Book) -> Evaluation:
 
 @pytest.fixture(scope="session")
 def report_dir(
-    tmp_path_factory: pytest.TempPathFactory, evaluation: Evaluation, whole_scan: ScanResult
+    pytestconfig: pytest.Config,
+    tmp_path_factory: pytest.TempPathFactory,
+    evaluation: Evaluation,
+    whole_scan: ScanResult,
 ) -> Path:
     """One report of the whole book, built once per session from the session's evaluation for
-    the report and browser tests (the command itself is tested on one chapter)."""
+    the report and browser tests (the command itself is tested on one chapter): collected from
+    the background build if the session started one, else built now."""
     from reports.output import write_atomically
     from reports.page import build_report
 
+    pending = pytestconfig.stash.get(_REPORT, None)
+    if pending is not None:
+        files = pending.files()
+    else:
+        files = build_report(evaluation, whole_scan, evaluation.catalog, None)
     out = tmp_path_factory.mktemp("report") / "out"
-    write_atomically(out, build_report(evaluation, whole_scan, evaluation.catalog, None))
+    write_atomically(out, files)
     return out
 
 
+def scan_of(config: pytest.Config) -> ScanResult:
+    """The scan of the whole book, computed once per process (a book is needed)."""
+    if _SCAN not in config.stash:
+        book = config.stash[_BOOK]
+        assert book is not None
+        chapters = tuple(c.key for c in book.identity.chapters)
+        config.stash[_SCAN] = scan(book, catalog_of(config), chapters)
+    return config.stash[_SCAN]
+
+
 @pytest.fixture(scope="session")
-def whole_scan(book: Book, catalog: Catalog) -> ScanResult:
+def whole_scan(pytestconfig: pytest.Config, book: Book) -> ScanResult:
     """The scan of the whole book, once per session."""
-    return scan(book, catalog, tuple(c.key for c in book.identity.chapters))
+    del book  # skips without one
+    return scan_of(pytestconfig)
 
 
 def pytest_sessionfinish(session: pytest.Session) -> None:

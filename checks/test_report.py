@@ -20,10 +20,11 @@ from reference.book import Book
 from reference.catalog import Catalog
 from reference.evaluation import Evaluation, evaluate_catalog
 from reference.scan import ScanResult, scan
+from reports.background import BackgroundReport, BackgroundReportError
 from reports.cli import main
 from reports.figures import registered
 from reports.output import ERRATA_COLUMNS, claims_json, errata_csv, write_atomically
-from reports.page import errata_rows, render_page, report_meta
+from reports.page import build_report, errata_rows, render_page, report_meta
 
 # under xdist (--dist loadgroup) one worker builds the session's report for all its tests
 pytestmark = [pytest.mark.report, pytest.mark.xdist_group("report")]
@@ -280,3 +281,40 @@ def test_write_is_atomic_and_keeps_properties(
     monkeypatch.undo()
     assert (out / "index.html").read_text(encoding="utf-8") == "new"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # no staging left behind
+
+
+@pytest.fixture(scope="module")
+def appendix(book: Book, catalog: Catalog) -> tuple[Evaluation, ScanResult]:
+    """The evaluation and scan of the shortest chapter (Appendix 1.A: one figure)."""
+    return evaluate_catalog(catalog, book, ["A1"]), scan(book, catalog, ("A1",))
+
+
+def test_a_background_build_gives_the_same_files(
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog
+) -> None:
+    """The report built in a forked process (as a serial test session builds it) is, byte for
+    byte, the report built in place."""
+    evaluation, result = appendix
+    in_place = build_report(evaluation, result, catalog, None)
+    pending = BackgroundReport(evaluation, result, catalog)
+    assert pending.files() == in_place
+    assert not pending.running
+    assert '<figure id="figure-' in in_place["index.html"]
+
+
+def test_a_failed_background_build_raises_with_its_traceback(
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog
+) -> None:
+    _, result = appendix
+    pending = BackgroundReport(None, result, catalog)  # type: ignore[arg-type]  # no evaluation
+    with pytest.raises(BackgroundReportError, match=r"(?s)failed.*Traceback.*AttributeError"):
+        pending.files()
+
+
+def test_a_background_build_no_longer_needed_is_stopped(
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog
+) -> None:
+    evaluation, result = appendix
+    pending = BackgroundReport(evaluation, result, catalog)
+    pending.stop()
+    assert not pending.running

@@ -235,11 +235,17 @@ def render_page(
 
 
 def build_report(
-    evaluation: Evaluation, scan: ScanResult, catalog: Catalog, properties: Path | None
+    evaluation: Evaluation,
+    scan: ScanResult,
+    catalog: Catalog,
+    properties: Path | None,
+    figure_workers: int | None = None,
 ) -> dict[str, str]:
-    """The report's files by name: ``index.html``, ``errata.csv``, ``claims.json``."""
+    """The report's files by name: ``index.html``, ``errata.csv``, ``claims.json``; the
+    figures drawn by ``figure_workers`` processes (``render_all``'s default if None)."""
+    figures = render_all(evaluation, figure_workers)
     return {
-        "index.html": render_page(evaluation, scan, catalog, properties),
+        "index.html": render_page(evaluation, scan, catalog, properties, figures),
         "errata.csv": errata_csv(errata_rows(evaluation)),
         "claims.json": claims_json(
             report_meta(evaluation, scan), [c.to_json() for c in evaluation]

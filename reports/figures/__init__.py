@@ -140,10 +140,10 @@ def _draw(key: str) -> str:
     return _svg(fig, spec.key)
 
 
-def render_all(evaluation: Evaluation) -> list[RenderedFigure]:
+def render_all(evaluation: Evaluation, workers: int | None = None) -> list[RenderedFigure]:
     """Every registered figure whose claims are evaluated, as inline SVG, in chapter order,
-    drawn in parallel on the machine's cores (forked workers; serially where forking is not
-    available)."""
+    drawn in parallel by ``workers`` forked processes (by default one per core, at most 4;
+    serially where forking is not available or ``workers`` is 1)."""
     _register_all()
     claims = evaluation.by_id()
     # a report of some chapters draws the figures of those chapters only
@@ -156,7 +156,7 @@ def render_all(evaluation: Evaluation) -> list[RenderedFigure]:
     _CLAIMS.update(claims)
     keys = [spec.key for spec in specs]
     _load_matplotlib()
-    workers = min(len(keys), os.cpu_count() or 1, 4)
+    workers = min(len(keys), workers or os.cpu_count() or 1, 4)
     if workers > 1 and "fork" in multiprocessing.get_all_start_methods():
         context = multiprocessing.get_context("fork")
         with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
