@@ -3,8 +3,9 @@ and the verdict summary.
 
 - ``--book PATH`` (else ``$BANGCHECK_BOOK``). Without a book, tests that read it skip with the
   reason; under ``CI=true`` or when a path is given, a missing or wrong book is an error.
-- The catalog is read and validated once, at collection; an invalid catalog stops the run with
-  one line per problem (file, claim id, field).
+- The catalog is read and validated once, as collection starts (under xdist the controller
+  does it while the workers start); an invalid catalog stops the run with one line per problem
+  (file, claim id, field).
 - Hypothesis profiles ``ci`` (the default when ``CI=true``), ``dev`` (the default otherwise) and
   ``thorough``; choose with ``--hypothesis-profile``.
 - The terminal summary ends with the verdict counts, just before pytest's final line.
@@ -82,16 +83,23 @@ def _load_book(config: pytest.Config) -> Book | None:
 def pytest_configure(config: pytest.Config) -> None:
     gc.set_threshold(*_GC_THRESHOLDS)
     config.pluginmanager.register(InvariantRecorder(config), "bangcheck-invariants")
-    book = _load_book(config)
-    config.stash[_BOOK] = book
+    config.stash[_BOOK] = _load_book(config)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection(session: pytest.Session) -> None:
+    """Read and validate the catalog before anything is collected; an invalid one stops the
+    run. Under xdist the controller, which collects nothing itself, does this while its workers
+    start, and a problem is reported by it, once, before any worker runs a test."""
+    config = session.config
     try:
-        config.stash[_CATALOG] = checked_catalog(book)
+        config.stash[_CATALOG] = checked_catalog(config.stash[_BOOK])
     except CatalogError as err:
         raise pytest.UsageError(f"the catalog is invalid:\n{err}") from err
 
 
 def catalog_of(config: pytest.Config) -> Catalog:
-    """The validated catalog (read at configure time)."""
+    """The validated catalog (read as collection starts)."""
     return config.stash[_CATALOG]
 
 

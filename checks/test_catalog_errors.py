@@ -262,3 +262,22 @@ def test_cli_rejects_a_malformed_catalog_with_one_line_per_problem(
     assert err[0] == "bangcheck: the catalog is invalid (2 problem(s)):"
     assert err[1].startswith(f"{FILE}: ch08.t.m1: field 'quote': is not on line 6558")
     assert err[2:] == [f"{FILE}: ch08.t.v3: field 'quantity': required field is missing"]
+
+
+def test_pytest_stops_on_a_malformed_catalog_with_one_line_per_problem(
+    tmp_path: Path, book: Book, pytestconfig: pytest.Config, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The session's own check (conftest's ``pytest_collection``, run by the xdist controller
+    too) turns the problems into a usage error that lists them; nothing is collected."""
+    import conftest
+
+    text = (META + GIVENS + V3).replace('quantity = "top ball velocity"\n', "")
+    (tmp_path / "ch08.toml").write_text(text, encoding="utf-8")
+    monkeypatch.setattr(conftest, "checked_catalog", lambda b: checked_catalog(b, tmp_path))
+    session = type("Session", (), {"config": pytestconfig})()
+    with pytest.raises(pytest.UsageError) as raised:
+        conftest.pytest_collection(session)
+    assert str(raised.value).splitlines() == [
+        "the catalog is invalid:",
+        f"{FILE}: ch08.t.v3: field 'quantity': required field is missing",
+    ]
