@@ -141,7 +141,11 @@ def _start_report_in_background(session: pytest.Session) -> None:
     tests. Without property tests to hide behind, the report is built when first needed, its
     figures drawn on every core."""
     config = session.config
-    if hasattr(config, "workerinput") or config.stash.get(_BOOK, None) is None:
+    if (
+        config.option.collectonly
+        or hasattr(config, "workerinput")
+        or config.stash.get(_BOOK, None) is None
+    ):
         return
     items = session.items
     if not (

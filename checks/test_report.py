@@ -11,6 +11,7 @@ import dataclasses
 import io
 import json
 import re
+from collections import Counter
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -157,7 +158,7 @@ def test_every_claim_appears_once(page: Page, evaluation: Evaluation) -> None:
 
 
 def test_ids_are_unique_even_across_figures(page: Page) -> None:
-    duplicated = {i for i in page.ids if page.ids.count(i) > 1}
+    duplicated = [i for i, n in Counter(page.ids).items() if n > 1]
     assert not duplicated
 
 

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import hashlib
 import os
-import tomllib
 from dataclasses import dataclass
 from functools import cache
 from importlib.resources import files
 from pathlib import Path
+
+import tomli
 
 BOOK_ENV = "BANGCHECK_BOOK"
 
@@ -60,7 +61,7 @@ class Identity:
 @cache
 def identity() -> Identity:
     """The book's identity, read once from the package data ``reference/book.toml``."""
-    data = tomllib.loads(files("reference").joinpath("book.toml").read_text(encoding="utf-8"))
+    data = tomli.loads(files("reference").joinpath("book.toml").read_text(encoding="utf-8"))
     rows = data["chapter"]
     chapters = []
     for i, row in enumerate(rows):

@@ -9,7 +9,6 @@ the book), keeping the entries that pass with a list of the problems of those th
 
 from __future__ import annotations
 
-import tomllib
 from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
@@ -18,6 +17,7 @@ from importlib.resources.abc import Traversable
 from pathlib import Path
 from typing import Any
 
+import tomli
 from pydantic import BaseModel, ValidationError
 
 from reference.schema import Claim, Excluded, Meta, Problem, Slip
@@ -139,8 +139,8 @@ def parse_file(name: str, text: str) -> ParsedFile:
     problems: list[Problem] = []
     rejected: set[str] = set()
     try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
+        raw = tomli.loads(text)
+    except tomli.TOMLDecodeError as err:
         problems.append(Problem(name, "-", "-", f"not valid TOML: {err}"))
         return ParsedFile(None, tuple(problems), frozenset())
     unknown = set(raw) - {"meta", "claim", "excluded", "slip"}

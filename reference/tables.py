@@ -8,11 +8,12 @@ read. Derived constants are computed here, each from the entries it names.
 from __future__ import annotations
 
 import math
-import tomllib
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from functools import cache
 from importlib.resources import files
+
+import tomli
 
 NO_CONVERSION = ("scaled", "1")
 
@@ -57,7 +58,7 @@ class Constant:
 
 
 def _read(name: str) -> dict:
-    return tomllib.loads(files("reference").joinpath(name).read_text(encoding="utf-8"))
+    return tomli.loads(files("reference").joinpath(name).read_text(encoding="utf-8"))
 
 
 @cache
