@@ -199,24 +199,30 @@ def test_a_fresh_run_gives_identical_csv_and_json(
         assert text.encode("utf-8") == (report_dir / name).read_bytes(), name
 
 
-def test_quoted_text_is_escaped(
-    evaluation: Evaluation, catalog: Catalog, whole_scan: ScanResult
-) -> None:
+@pytest.fixture(scope="module")
+def appendix(book: Book, catalog: Catalog) -> tuple[Evaluation, ScanResult]:
+    """The evaluation and scan of the shortest chapter (Appendix 1.A: one figure)."""
+    return evaluate_catalog(catalog, book, ["A1"]), scan(book, catalog, ("A1",))
+
+
+def test_quoted_text_is_escaped(appendix: tuple[Evaluation, ScanResult], catalog: Catalog) -> None:
+    evaluation, result = appendix
     hostile = "<script>alert(1)</script>"
     claims = tuple(
         dataclasses.replace(c, quote=hostile, quantity=hostile, verdict="erratum") if i == 0 else c
         for i, c in enumerate(evaluation)
     )
     spoilt = dataclasses.replace(evaluation, claims=claims)
-    html = render_page(spoilt, whole_scan, catalog, None, figures=[])
+    html = render_page(spoilt, result, catalog, None, figures=[])
     assert hostile not in html
     assert "&lt;script&gt;alert(1)&lt;/script&gt;" in html
     assert parse(html).scripts == 1  # the page's own small script, nothing else
 
 
 def test_properties_are_shown_when_present(
-    evaluation: Evaluation, catalog: Catalog, whole_scan: ScanResult, tmp_path: Path
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog, tmp_path: Path
 ) -> None:
+    evaluation, result = appendix
     results = {
         "date": "2026-11-22T00:00:00Z",
         "profile": "ci",
@@ -233,7 +239,6 @@ def test_properties_are_shown_when_present(
     }
     path = tmp_path / "properties.json"
     path.write_text(json.dumps(results), encoding="utf-8")
-    result = whole_scan
     html = render_page(evaluation, result, catalog, path, figures=[])
     assert 'id="properties"' in html
     assert "P is conserved" in html
@@ -282,12 +287,6 @@ def test_write_is_atomic_and_keeps_properties(
     monkeypatch.undo()
     assert (out / "index.html").read_text(encoding="utf-8") == "new"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # no staging left behind
-
-
-@pytest.fixture(scope="module")
-def appendix(book: Book, catalog: Catalog) -> tuple[Evaluation, ScanResult]:
-    """The evaluation and scan of the shortest chapter (Appendix 1.A: one figure)."""
-    return evaluate_catalog(catalog, book, ["A1"]), scan(book, catalog, ("A1",))
 
 
 def test_a_background_build_gives_the_same_files(

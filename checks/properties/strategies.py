@@ -17,15 +17,18 @@ SPEED_LIMIT = 1e3
 def rationals(
     low: Fraction | int, high: Fraction | int, max_denominator: int
 ) -> st.SearchStrategy[Fraction]:
-    """An exact p/q in [low, high] with 1 <= q <= max_denominator, built from two integers
-    (``st.fractions`` draws the same numbers several times more slowly)."""
+    """An exact p/q in [low, high] with 1 <= q <= max_denominator, unpacked from one drawn
+    integer n (q from n mod max_denominator, p from the rest): one draw is a third cheaper than
+    two, and ``st.fractions`` draws the same numbers several times more slowly. Shrinking n
+    towards 0 gives low with q = 1."""
     low, high = Fraction(low), Fraction(high)
 
-    def build(q: int, u: int) -> Fraction:
+    def build(n: int) -> Fraction:
+        q, u = n % max_denominator + 1, n // max_denominator
         first, last = math.ceil(low * q), math.floor(high * q)
         return Fraction(first + u % (last - first + 1), q)
 
-    return st.builds(build, st.integers(1, max_denominator), st.integers(0, 2**31))
+    return st.integers(0, max_denominator * 2**31 - 1).map(build)
 
 
 def masses() -> st.SearchStrategy[float]:
