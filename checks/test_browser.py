@@ -15,8 +15,10 @@ import pytest
 
 from reference.evaluation import Evaluation
 
-# under xdist (--dist loadgroup) one worker builds the session's report for all its tests
-pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("report")]
+# under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
+# one group, run by one worker, which evaluates the catalog, scans the book and builds the
+# report once
+pytestmark = [pytest.mark.browser, pytest.mark.xdist_group("evaluation")]
 
 CHROMIUM = "/usr/bin/chromium"
 FLAGS = [

@@ -10,9 +10,10 @@ import pytest
 
 from reference.evaluation import EvaluatedClaim, Evaluation
 
-# under xdist (--dist loadgroup) the claims are one unit of work: one worker evaluates the
-# catalog, and the controller schedules one unit instead of 1,998
-pytestmark = [pytest.mark.claims, pytest.mark.xdist_group("claims")]
+# under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
+# one group, run by one worker, which evaluates the catalog and scans the book once; the 1,998
+# claims are then also one unit of work for the controller to schedule
+pytestmark = [pytest.mark.claims, pytest.mark.xdist_group("evaluation")]
 
 
 def _explain(c: EvaluatedClaim, file: str) -> str:

@@ -151,11 +151,13 @@ def test_guarded_rules_spare_decimals_units_and_values_after_equals(book: Book) 
 
 
 @pytest.mark.integrity
+@pytest.mark.xdist_group("evaluation")  # with the other readers of the session's scan
 def test_rules_exclude_fewer_than_half_the_tokens(whole_scan: ScanResult) -> None:
     by_rule = sum(c.excluded_rule for c in whole_scan.chapters.values())
     assert by_rule < len(whole_scan.tokens) / 2
 
 
 @pytest.mark.integrity
+@pytest.mark.xdist_group("evaluation")  # with the other readers of the session's scan
 def test_no_rule_or_hand_exclusion_conflicts_with_the_catalog(whole_scan: ScanResult) -> None:
     assert whole_scan.conflicts == []

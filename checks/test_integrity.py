@@ -21,7 +21,9 @@ from reference.scan import ScanResult
 from reference.tables import unit_factor
 from reference.validate import parsed, validate
 
-pytestmark = pytest.mark.integrity
+# under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
+# one group, run by one worker, which evaluates the catalog and scans the book once
+pytestmark = [pytest.mark.integrity, pytest.mark.xdist_group("evaluation")]
 
 
 def test_the_catalog_is_valid_against_the_book(catalog: Catalog, book: Book) -> None:

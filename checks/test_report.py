@@ -27,8 +27,10 @@ from reports.figures import registered
 from reports.output import ERRATA_COLUMNS, claims_json, errata_csv, write_atomically
 from reports.page import build_report, errata_rows, render_page, report_meta
 
-# under xdist (--dist loadgroup) one worker builds the session's report for all its tests
-pytestmark = [pytest.mark.report, pytest.mark.xdist_group("report")]
+# under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
+# one group, run by one worker, which evaluates the catalog, scans the book and builds the
+# report once
+pytestmark = [pytest.mark.report, pytest.mark.xdist_group("evaluation")]
 
 VOID = {
     "meta",
