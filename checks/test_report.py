@@ -10,7 +10,9 @@ import csv
 import dataclasses
 import io
 import json
+import os
 import re
+import time
 from collections import Counter
 from html.parser import HTMLParser
 from pathlib import Path
@@ -305,18 +307,39 @@ def test_a_background_build_gives_the_same_files(
 
 
 def test_a_failed_background_build_raises_with_its_traceback(
-    appendix: tuple[Evaluation, ScanResult], catalog: Catalog
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    _, result = appendix
-    pending = BackgroundReport(None, result, catalog)  # type: ignore[arg-type]  # no evaluation
-    with pytest.raises(BackgroundReportError, match=r"(?s)failed.*Traceback.*AttributeError"):
+    def spoilt(*args: object, **kwargs: object) -> dict[str, str]:
+        raise ValueError("no figures today")
+
+    monkeypatch.setattr("reports.page.build_report", spoilt)  # the forked child inherits it
+    pending = BackgroundReport(*appendix, catalog)
+    for _ in range(2):  # and again: the error is kept
+        with pytest.raises(BackgroundReportError, match=r"(?s)failed.*ValueError: no figures"):
+            pending.files()
+
+
+def test_a_background_process_that_dies_is_reported(
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    def dies(*args: object, **kwargs: object) -> dict[str, str]:
+        os._exit(3)
+
+    monkeypatch.setattr("reports.page.build_report", dies)
+    pending = BackgroundReport(*appendix, catalog)
+    with pytest.raises(BackgroundReportError, match=r"ended \(exit code 3\) without sending"):
         pending.files()
 
 
 def test_a_background_build_no_longer_needed_is_stopped(
-    appendix: tuple[Evaluation, ScanResult], catalog: Catalog
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    evaluation, result = appendix
-    pending = BackgroundReport(evaluation, result, catalog)
+    def slow(*args: object, **kwargs: object) -> dict[str, str]:
+        time.sleep(60)
+        return {}
+
+    monkeypatch.setattr("reports.page.build_report", slow)
+    pending = BackgroundReport(*appendix, catalog)
+    assert pending.running
     pending.stop()
     assert not pending.running

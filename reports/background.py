@@ -40,6 +40,7 @@ class BackgroundReport:
         self._process.start()
         sending.close()  # the child's end: the parent keeps only its own
         self._files: dict[str, str] | None = None
+        self._error: BackgroundReportError | None = None
 
     @staticmethod
     def available() -> bool:
@@ -52,23 +53,28 @@ class BackgroundReport:
         return self._process.is_alive()
 
     def files(self) -> dict[str, str]:
-        """The report's files by name, once built; ``BackgroundReportError`` if the build
-        failed or the process died."""
-        if self._files is None:
+        """The report's files by name, once built; ``BackgroundReportError`` (every time) if
+        the build failed or the process died."""
+        if self._files is None and self._error is None:
             try:
                 status, payload = self._connection.recv()
-            except EOFError as err:
-                self._process.join()
-                raise BackgroundReportError(
-                    f"the report process ended (exit code {self._process.exitcode}) "
-                    "without sending the report"
-                ) from err
+            except EOFError:
+                status, payload = "died", None
             finally:
                 self._connection.close()
             self._process.join()
-            if status != "ok":
-                raise BackgroundReportError(f"the report build failed:\n{payload}")
-            self._files = payload
+            if status == "ok":
+                self._files = payload
+            elif status == "died":
+                self._error = BackgroundReportError(
+                    f"the report process ended (exit code {self._process.exitcode}) "
+                    "without sending the report"
+                )
+            else:
+                self._error = BackgroundReportError(f"the report build failed:\n{payload}")
+        if self._error is not None:
+            raise self._error
+        assert self._files is not None
         return self._files
 
     def stop(self) -> None:
