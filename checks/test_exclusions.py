@@ -135,9 +135,12 @@ def _unit_after(text: str, end: int) -> bool:
 def test_guarded_rules_spare_decimals_units_and_values_after_equals(book: Book) -> None:
     guarded = {rule.name for rule in RULES if rule.guarded}
     offending = []
+    spans: dict[int, list] = {}  # the rules' spans of each line, found once per line
     for tok in tokenize(book.lines):
         text = book.line(tok.line)
-        rule = excluded_by(rule_spans(book.lines, tok.line), tok.start, tok.end)
+        if tok.line not in spans:
+            spans[tok.line] = rule_spans(book.lines, tok.line)
+        rule = excluded_by(spans[tok.line], tok.start, tok.end)
         if rule not in guarded:
             continue
         digits = len(tok.text.strip("-−–+±").lstrip("0").replace(",", ""))
