@@ -133,13 +133,17 @@ def pytest_collection_finish(session: pytest.Session) -> None:
     _freeze_long_lived()
 
 
+# about 5 s of property tests (the suite has 414), as long as the report takes on one core
+_HIDING_PROPERTIES = 100
+
+
 def _start_report_in_background(session: pytest.Session) -> None:
-    """In a serial run with tests of the whole report and property tests, start building the
-    whole report in a forked process now, on the core the tests leave idle; the report and
-    browser tests, which run after the long property suite, then collect it. Not under xdist:
-    there both cores are busy, and a worker does not know whether it will get the report
-    tests. Without property tests to hide behind, the report is built when first needed, its
-    figures drawn on every core."""
+    """In a serial run with tests of the whole report and at least ``_HIDING_PROPERTIES``
+    property tests, start building the whole report in a forked process now, on the core the
+    tests leave idle; the report and browser tests, which run after the property suite, then
+    collect it. Not under xdist: there both cores are busy, and a worker does not know whether
+    it will get the report tests. With fewer property tests to hide behind, the report is
+    built when first needed, its figures drawn on every core."""
     config = session.config
     if (
         config.option.collectonly
@@ -150,7 +154,8 @@ def _start_report_in_background(session: pytest.Session) -> None:
     items = session.items
     if not (
         any("report_dir" in getattr(item, "fixturenames", ()) for item in items)
-        and any(item.get_closest_marker("properties") is not None for item in items)
+        and sum(item.get_closest_marker("properties") is not None for item in items)
+        >= _HIDING_PROPERTIES
         and BackgroundReport.available()
     ):
         return
