@@ -143,7 +143,8 @@ def _start_report_in_background(session: pytest.Session) -> None:
     tests leave idle; the report and browser tests, which run after the property suite, then
     collect it. Not under xdist: there both cores are busy, and a worker does not know whether
     it will get the report tests. With fewer property tests to hide behind, the report is
-    built when first needed, its figures drawn on every core."""
+    built when first needed, its figures drawn on every core. Should the catalog's evaluation
+    or the scan fail, nothing starts: the tests that need them fail with the reason."""
     config = session.config
     if (
         config.option.collectonly
@@ -159,9 +160,13 @@ def _start_report_in_background(session: pytest.Session) -> None:
         and BackgroundReport.available()
     ):
         return
-    evaluation = evaluation_of(config)
+    try:
+        evaluation = evaluation_of(config)
+        result = scan_of(config)
+    except Exception:  # the tests that read them fail with the reason instead
+        return
     assert evaluation is not None
-    config.stash[_REPORT] = BackgroundReport(evaluation, scan_of(config), catalog_of(config))
+    config.stash[_REPORT] = BackgroundReport(evaluation, result, catalog_of(config))
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:

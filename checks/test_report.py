@@ -13,6 +13,7 @@ import json
 import os
 import re
 import time
+import types
 from collections import Counter
 from html.parser import HTMLParser
 from pathlib import Path
@@ -343,3 +344,25 @@ def test_a_background_build_no_longer_needed_is_stopped(
     assert pending.running
     pending.stop()
     assert not pending.running
+
+
+def test_a_failing_evaluation_starts_no_background_build(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """When the catalog cannot be evaluated, the session starts nothing in the background and
+    raises nothing at collection: the tests that read the evaluation fail with the reason."""
+    import conftest
+
+    def broken(config: object) -> Evaluation:
+        raise ValueError("a model raised")
+
+    monkeypatch.setattr(conftest, "evaluation_of", broken)
+    config = types.SimpleNamespace(option=types.SimpleNamespace(collectonly=False), stash={})
+    config.stash[conftest._BOOK] = book
+    reporting = types.SimpleNamespace(
+        fixturenames=("report_dir",), get_closest_marker=lambda name: None
+    )
+    prop = types.SimpleNamespace(fixturenames=(), get_closest_marker=lambda name: name)
+    session = types.SimpleNamespace(config=config, items=[reporting] + [prop] * 100)
+    conftest._start_report_in_background(session)
+    assert conftest._REPORT not in config.stash
