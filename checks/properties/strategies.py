@@ -20,7 +20,7 @@ def rationals(
     """An exact p/q in [low, high] with 1 <= q <= max_denominator, unpacked from one drawn
     integer n (q from n mod max_denominator, p from the rest): one draw is a third cheaper than
     two, and ``st.fractions`` draws the same numbers several times more slowly. Shrinking n
-    towards 0 gives low with q = 1."""
+    towards 0 gives the least whole number in the range (q = 1)."""
     low, high = Fraction(low), Fraction(high)
 
     def build(n: int) -> Fraction:
