@@ -307,14 +307,25 @@ def test_a_background_build_gives_the_same_files(
     assert '<figure id="figure-' in in_place["index.html"]
 
 
+def _background_with(
+    build: object,
+    appendix: tuple[Evaluation, ScanResult],
+    catalog: Catalog,
+    monkeypatch: pytest.MonkeyPatch,
+) -> BackgroundReport:
+    """A background build whose forked child runs ``build`` in place of ``build_report`` (the
+    child inherits the patched module)."""
+    monkeypatch.setattr("reports.page.build_report", build)
+    return BackgroundReport(*appendix, catalog)
+
+
 def test_a_failed_background_build_raises_with_its_traceback(
     appendix: tuple[Evaluation, ScanResult], catalog: Catalog, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     def spoilt(*args: object, **kwargs: object) -> dict[str, str]:
         raise ValueError("no figures today")
 
-    monkeypatch.setattr("reports.page.build_report", spoilt)  # the forked child inherits it
-    pending = BackgroundReport(*appendix, catalog)
+    pending = _background_with(spoilt, appendix, catalog, monkeypatch)
     for _ in range(2):  # and again: the error is kept
         with pytest.raises(BackgroundReportError, match=r"(?s)failed.*ValueError: no figures"):
             pending.files()
@@ -323,11 +334,7 @@ def test_a_failed_background_build_raises_with_its_traceback(
 def test_a_background_process_that_dies_is_reported(
     appendix: tuple[Evaluation, ScanResult], catalog: Catalog, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def dies(*args: object, **kwargs: object) -> dict[str, str]:
-        os._exit(3)
-
-    monkeypatch.setattr("reports.page.build_report", dies)
-    pending = BackgroundReport(*appendix, catalog)
+    pending = _background_with(lambda *a, **k: os._exit(3), appendix, catalog, monkeypatch)
     with pytest.raises(BackgroundReportError, match=r"ended \(exit code 3\) without sending"):
         pending.files()
 
@@ -335,12 +342,7 @@ def test_a_background_process_that_dies_is_reported(
 def test_a_background_build_no_longer_needed_is_stopped(
     appendix: tuple[Evaluation, ScanResult], catalog: Catalog, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def slow(*args: object, **kwargs: object) -> dict[str, str]:
-        time.sleep(60)
-        return {}
-
-    monkeypatch.setattr("reports.page.build_report", slow)
-    pending = BackgroundReport(*appendix, catalog)
+    pending = _background_with(lambda *a, **k: time.sleep(60), appendix, catalog, monkeypatch)
     assert pending.running
     pending.stop()
     assert not pending.running

@@ -178,10 +178,10 @@ def render_page(
     scan: ScanResult,
     catalog: Catalog,
     properties: Path | None,
-    figures: list[RenderedFigure] | None = None,
+    figures: list[RenderedFigure],
 ) -> str:
-    """The report page as one HTML string; ``figures`` already rendered, or None to render
-    every registered figure."""
+    """The report page as one HTML string, with ``figures`` already rendered
+    (``reports.figures.render_all``)."""
     book = evaluation.book
     values = evaluation.by_id()
     titles = {c.key: c.title for c in book.identity.chapters}
@@ -219,7 +219,7 @@ def render_page(
         coverage=_coverage(scan),
         errata=errata,
         chapters=chapters,
-        figures=render_all(evaluation) if figures is None else figures,
+        figures=figures,
         unmodeled=[c for c in evaluation if c.verdict == "unmodeled"],
         properties=_properties(properties),
         slips=slips,
