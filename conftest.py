@@ -3,14 +3,16 @@ and the verdict summary.
 
 - ``--book PATH`` (else ``$BANGCHECK_BOOK``). Without a book, tests that read it skip with the
   reason; under ``CI=true`` or when a path is given, a missing or wrong book is an error.
+- ``--catalog DIR``: a directory of draft ``chNN.toml`` files instead of the packaged catalog,
+  as for the ``bangcheck`` command.
 - The catalog is read and validated once, as collection starts (under xdist the controller
   does it while the workers start); an invalid catalog stops the run with one line per problem
-  (file, claim id, field).
+  (file, claim id, field), a usage error, with or without a book.
 - Hypothesis profiles ``ci`` (the default when ``CI=true``), ``dev`` (the default otherwise) and
   ``thorough``; choose with ``--hypothesis-profile``.
 - The terminal summary ends with the verdict counts, just before pytest's final line.
-- The property tests' invariants are recorded in ``reports/out/properties.json`` for the report
-  (``checks/properties/recorder.py``).
+- The property tests' invariants are recorded in ``.bangcheck/properties.json`` at the rootdir
+  for the report (``checks/properties/recorder.py``).
 - The garbage collector runs less often, and what lives for the whole session is frozen out of
   its reach once collected and once evaluated (the property tests' allocations otherwise cost
   seconds of full collections).
@@ -30,7 +32,7 @@ from hypothesis import settings
 
 from checks.properties.recorder import InvariantRecorder
 from reference.book import Book, BookError, book_path, load_book
-from reference.catalog import Catalog
+from reference.catalog import Catalog, CatalogDirectoryError
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
 from reference.scan import ScanResult, scan
@@ -64,6 +66,13 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     parser.addoption(
         "--book", action="store", default=None, help="path of bang-unit1.txt ($BANGCHECK_BOOK)"
     )
+    parser.addoption(
+        "--catalog",
+        action="store",
+        default=None,
+        type=Path,
+        help="a directory of draft chNN.toml catalog files instead of the packaged catalog",
+    )
 
 
 def _load_book(config: pytest.Config) -> Book | None:
@@ -93,7 +102,9 @@ def pytest_collection(session: pytest.Session) -> None:
     start, and a problem is reported by it, once, before any worker runs a test."""
     config = session.config
     try:
-        config.stash[_CATALOG] = checked_catalog(config.stash[_BOOK])
+        config.stash[_CATALOG] = checked_catalog(config.stash[_BOOK], config.getoption("--catalog"))
+    except CatalogDirectoryError as err:
+        raise pytest.UsageError(str(err)) from err
     except CatalogError as err:
         raise pytest.UsageError(f"the catalog is invalid:\n{err}") from err
 
@@ -209,7 +220,7 @@ def report_dir(
     """One report of the whole book, built once per session from the session's evaluation for
     the report and browser tests (the command itself is tested on one chapter): collected from
     the background build if the session started one, else built now."""
-    from reports.output import write_atomically
+    from reports.outdir import write_report_dir
     from reports.page import build_report
 
     pending = pytestconfig.stash.get(_REPORT, None)
@@ -218,7 +229,7 @@ def report_dir(
     else:
         files = build_report(evaluation, whole_scan, evaluation.catalog, None)
     out = tmp_path_factory.mktemp("report") / "out"
-    write_atomically(out, files)
+    write_report_dir(out, files)
     return out
 
 
@@ -263,6 +274,8 @@ def pytest_terminal_summary(
 ) -> Generator[None]:
     result = yield
     counts = config.stash.get(_WORKER_VERDICTS, None)
+    if counts is None and _CATALOG not in config.stash:
+        return result  # the catalog was refused at collection: the usage error says why
     if counts is None:
         evaluation = evaluation_of(config)
         counts = evaluation.verdict_counts() if evaluation is not None else None

@@ -8,7 +8,17 @@ from pathlib import Path
 
 import pytest
 
-from reference.book import Book, BookError, book_path, chapter_keys, identity, load_book
+from reference.book import (
+    LINE_DIGEST_SIZE,
+    Book,
+    BookError,
+    book_path,
+    chapter_keys,
+    identity,
+    known_line_digests,
+    line_digests,
+    load_book,
+)
 
 
 @pytest.mark.integrity
@@ -18,6 +28,16 @@ def test_identity_matches_the_text(book: Book) -> None:
     assert hashlib.sha256(data).hexdigest() == ident.sha256
     assert len(data.decode("utf-8").split("\n")) == ident.lines == 16964
     assert not data.endswith(b"\n")
+
+
+@pytest.mark.integrity
+def test_the_shipped_line_digests_are_the_books(book: Book) -> None:
+    """``reference/book-lines.b2``, which tells a user which lines of their file differ, is the
+    digest of every line of the book, in order."""
+    assert known_line_digests() == tuple(
+        line_digests([line])[:LINE_DIGEST_SIZE] for line in book.lines
+    )
+    assert len(set(known_line_digests())) == len(set(book.lines))  # no two lines share one
 
 
 @pytest.mark.integrity
@@ -69,6 +89,10 @@ def test_a_relative_path_is_made_absolute(monkeypatch: pytest.MonkeyPatch) -> No
         ("4,5", ("4", "5")),
         ("A1", ("A1",)),
         ("12-A1", ("12", "A1")),
+        ("a1", ("A1",)),
+        ("04", ("4",)),
+        (" 08 - 09 ", ("8", "9")),
+        ("12-a1", ("12", "A1")),
         (None, tuple(c.key for c in identity().chapters)),
     ],
 )
@@ -76,7 +100,7 @@ def test_chapter_specs(spec: str | None, keys: tuple[str, ...]) -> None:
     assert chapter_keys(spec) == keys
 
 
-@pytest.mark.parametrize("spec", ["13", "3-1", "x", "1-B2"])
+@pytest.mark.parametrize("spec", ["13", "3-1", "x", "1-B2", "", "  ", "4,", "-3"])
 def test_bad_chapter_specs(spec: str) -> None:
     with pytest.raises(ValueError, match="chapter"):
         chapter_keys(spec)

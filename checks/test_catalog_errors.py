@@ -6,6 +6,9 @@ each test spoils it in one way and checks the one problem reported.
 
 from __future__ import annotations
 
+import subprocess
+import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -17,7 +20,6 @@ from reports.cli import main
 
 pytestmark = pytest.mark.integrity
 
-FILE = "reference/claims/ch08.toml"
 META = """[meta]
 chapter = "8"
 title = "N-body collisions"
@@ -95,7 +97,7 @@ def problems_of(tmp_path: Path, book: Book, text: str) -> list[Problem]:
 def one_problem(tmp_path: Path, book: Book, text: str) -> Problem:
     found = problems_of(tmp_path, book, text)
     assert len(found) == 1, "\n".join(map(str, found))
-    assert found[0].file == FILE
+    assert found[0].file == str(tmp_path / "ch08.toml")  # the draft's own path
     return found[0]
 
 
@@ -161,7 +163,7 @@ def test_one_spoilt_field_gives_one_line(
     found = one_problem(tmp_path, book, text.replace(old, new, 1))
     assert (found.id, found.field) == (ident, field)
     line = str(found)
-    assert line.startswith(f"{FILE}: {ident}: field '{field}': ")
+    assert line.startswith(f"{tmp_path / 'ch08.toml'}: {ident}: field '{field}': ")
 
 
 def test_an_unreferenced_given_is_an_error(tmp_path: Path, book: Book) -> None:
@@ -222,6 +224,14 @@ expect = "verified"
 def test_duplicate_ids(tmp_path: Path, book: Book) -> None:
     found = problems_of(tmp_path, book, META + GIVENS + V3 + V3)
     assert [(p.id, p.field) for p in found] == [("ch08.t.v3", "id")]
+    assert found[0].message == f"duplicate id (also at line 6562 of {tmp_path / 'ch08.toml'})"
+
+
+def test_the_packaged_catalog_is_named_by_its_place_in_the_project(book: Book) -> None:
+    from reference.catalog import default_directory, display_name
+
+    path = default_directory().joinpath("ch08.toml")
+    assert display_name(path, packaged=True) == "reference/claims/ch08.toml"
 
 
 def test_bad_toml_names_the_file(tmp_path: Path, book: Book) -> None:
@@ -258,26 +268,80 @@ def test_cli_rejects_a_malformed_catalog_with_one_line_per_problem(
     (tmp_path / "ch08.toml").write_text(text, encoding="utf-8")
     code = main(["claims", "--book", str(book.path), "--catalog", str(tmp_path)])
     err = capsys.readouterr().err.splitlines()
+    where = tmp_path / "ch08.toml"
     assert code == 2
     assert err[0] == "bangcheck: the catalog is invalid (2 problem(s)):"
-    assert err[1].startswith(f"{FILE}: ch08.t.m1: field 'quote': is not on line 6558")
-    assert err[2:] == [f"{FILE}: ch08.t.v3: field 'quantity': required field is missing"]
+    assert err[1].startswith(f"{where}: ch08.t.m1: field 'quote': is not on line 6558")
+    assert err[2:] == [f"{where}: ch08.t.v3: field 'quantity': required field is missing"]
 
 
+@pytest.mark.parametrize("workers", [[], ["-n", "2"]], ids=["serial", "xdist"])
 def test_pytest_stops_on_a_malformed_catalog_with_one_line_per_problem(
-    tmp_path: Path, book: Book, pytestconfig: pytest.Config, monkeypatch: pytest.MonkeyPatch
+    tmp_path: Path, book: Book, workers: list[str]
 ) -> None:
-    """The session's own check (conftest's ``pytest_collection``, run by the xdist controller
-    too) turns the problems into a usage error that lists them; nothing is collected."""
-    import conftest
-
-    text = (META + GIVENS + V3).replace('quantity = "top ball velocity"\n', "")
-    (tmp_path / "ch08.toml").write_text(text, encoding="utf-8")
-    monkeypatch.setattr(conftest, "checked_catalog", lambda b: checked_catalog(b, tmp_path))
-    session = type("Session", (), {"config": pytestconfig})()
-    with pytest.raises(pytest.UsageError) as raised:
-        conftest.pytest_collection(session)
-    assert str(raised.value).splitlines() == [
-        "the catalog is invalid:",
-        f"{FILE}: ch08.t.v3: field 'quantity': required field is missing",
+    """``pytest --book=... --catalog=DIR`` with a duplicate id: the usage error that lists the
+    problems, one line each, exit 4, nothing run and no traceback, serial and under xdist."""
+    draft = tmp_path / "draft"
+    draft.mkdir()
+    (draft / "ch08.toml").write_text(META + GIVENS + V3 + V3, encoding="utf-8")
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            f"--book={book.path}",
+            f"--catalog={draft}",
+            "-p",
+            "no:cacheprovider",
+            "-q",
+            *workers,
+            "checks/test_book.py",
+        ],
+        cwd=Path(__file__).parents[1],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    output = done.stdout + done.stderr
+    assert done.returncode == pytest.ExitCode.USAGE_ERROR, output
+    lines = [line for line in output.splitlines() if line.strip()]
+    start = lines.index("ERROR: the catalog is invalid:")
+    where = draft / "ch08.toml"
+    assert lines[start + 1 :] == [
+        f"{where}: ch08.t.v3: field 'id': duplicate id (also at line 6562 of {where})"
     ]
+    assert "Traceback" not in output
+    assert "KeyError" not in output
+    assert "passed" not in output
+
+
+@pytest.mark.parametrize(
+    ("make", "message"),
+    [
+        (lambda d: d, "holds no catalog files"),
+        (lambda d: d / "absent", "not a directory"),
+    ],
+    ids=["empty", "missing"],
+)
+def test_pytest_refuses_a_catalog_directory_without_catalog_files(
+    tmp_path: Path, make: Callable[[Path], Path], message: str
+) -> None:
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pytest",
+            f"--catalog={make(tmp_path)}",
+            "-p",
+            "no:cacheprovider",
+            "-q",
+            "checks/test_book.py",
+        ],
+        cwd=Path(__file__).parents[1],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == pytest.ExitCode.USAGE_ERROR, done.stdout + done.stderr
+    assert message in done.stderr
+    assert "Traceback" not in done.stdout + done.stderr

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import shutil
 import subprocess
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -122,3 +123,130 @@ def test_the_console_command_is_installed(book: Book) -> None:
     )
     assert done.returncode == 0, done.stderr
     assert "ch09.tunnel-time" in done.stdout
+
+
+def test_report_exits_one_and_marks_claims_that_differ_from_expect(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A claim whose verdict is not its ``expect`` (a catalog or model bug) fails ``report`` as
+    it fails ``claims``; the report is still written, and says so on the page."""
+    source = Path(__file__).parents[1] / "reference" / "claims" / "chA1.toml"
+    text = source.read_text(encoding="utf-8")
+    draft = text.replace(
+        'pick = "sum_triangle"\nexpect = "verified"', 'pick = "sum_triangle"\nexpect = "rounding"'
+    )
+    assert draft != text
+    (tmp_path / "draft").mkdir()
+    (tmp_path / "draft" / "chA1.toml").write_text(draft, encoding="utf-8")
+    out = tmp_path / "out"
+    code, _, err = run(
+        capsys,
+        "report",
+        "--book",
+        str(book.path),
+        "--catalog",
+        str(tmp_path / "draft"),
+        "--out",
+        str(out),
+    )
+    assert code == 1
+    assert "1 claim(s) differ from expect: chA1.area.triangle" in err
+    html = (out / "index.html").read_text(encoding="utf-8")
+    assert 'id="failing"' in html
+    assert (
+        '<tr class="claim differs" data-verdict="verified" id="claim-chA1.area.triangle">' in html
+    )
+    code, _, _ = run(
+        capsys, "report", "--book", str(book.path), "--chapter", "A1", "--out", str(out)
+    )
+    assert code == 0
+    assert 'id="failing"' not in (out / "index.html").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize(
+    ("make", "message"),
+    [
+        (lambda d: d, "holds no catalog files"),
+        (lambda d: d / "absent", "not a directory"),
+        (lambda d: d.parent / "ch08.toml", "not a directory"),
+    ],
+    ids=["empty", "missing", "a-file"],
+)
+def test_a_catalog_directory_without_catalog_files_is_a_usage_error(
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    make: Callable[[Path], Path],
+    message: str,
+) -> None:
+    (tmp_path / "empty").mkdir()
+    (tmp_path / "ch08.toml").write_text("", encoding="utf-8")
+    with pytest.raises(SystemExit) as exit_info:
+        main(["claims", "--catalog", str(make(tmp_path / "empty"))])
+    assert exit_info.value.code == 2
+    assert message in capsys.readouterr().err
+
+
+def test_a_catalog_directory_one_level_up_gets_a_hint(capsys: pytest.CaptureFixture[str]) -> None:
+    reference = Path(__file__).parents[1] / "reference"
+    with pytest.raises(SystemExit):
+        main(["scan", "--catalog", str(reference)])
+    assert f"did you mean {reference / 'claims'}?" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("spec", ["", " ", ",", "4,"])
+def test_an_empty_chapter_spec_is_a_usage_error(
+    spec: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    with pytest.raises(SystemExit) as exit_info:
+        main(["claims", "--chapter", spec])
+    assert exit_info.value.code == 2
+    assert "chapter" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(("spec", "chapter"), [("a1", "A1"), ("04", "4"), ("08-09", "9")])
+def test_chapter_specs_as_people_type_them(
+    book: Book, capsys: pytest.CaptureFixture[str], spec: str, chapter: str
+) -> None:
+    code, out, _ = run(capsys, "claims", "--json", "--chapter", spec, "--book", str(book.path))
+    assert code == 0
+    assert chapter in {json.loads(line)["chapter"] for line in out.splitlines()}
+
+
+def test_version(capsys: pytest.CaptureFixture[str]) -> None:
+    from importlib.metadata import version
+
+    with pytest.raises(SystemExit) as exit_info:
+        main(["--version"])
+    assert exit_info.value.code == 0
+    assert capsys.readouterr().out == f"bangcheck {version('bangcheck')}\n"
+
+
+@pytest.mark.parametrize(
+    ("spoil", "says"),
+    [
+        (lambda b: b"", "the file is empty"),
+        (lambda b: b.replace(b"\n", b"\r\n"), "the book with Windows (CRLF) line ends"),
+        (lambda b: b + b"\n", "newline(s) added at the end"),
+        (lambda b: b.replace(b"V3=3.62", b"V3=3.65", 1), "line 6527 differs from the book's"),
+        (lambda b: b.replace(b"\n", b"\n\n", 1), "it has 16,965 lines, the book 16,964"),
+        (
+            lambda b: b.replace(b"V3=3.62", b"V3=3.65").replace(b"m1=100", b"m1=101"),
+            "lines differ from the book's: ",
+        ),
+    ],
+    ids=["empty", "crlf", "final-newline", "one-line", "line-count", "lines"],
+)
+def test_a_different_book_says_how_it_differs(
+    book: Book,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    spoil: Callable[[bytes], bytes],
+    says: str,
+) -> None:
+    wrong = tmp_path / "book.txt"
+    wrong.write_bytes(spoil(book.path.read_bytes()))
+    code, out, err = run(capsys, "scan", "--book", str(wrong))
+    assert (code, out) == (2, "")
+    assert err.count("\n") == 1
+    assert f"{wrong} is not the book the catalog cites: " in err
+    assert says in err

@@ -27,7 +27,9 @@ from reference.scan import ScanResult, scan
 from reports.background import BackgroundReport, BackgroundReportError
 from reports.cli import main
 from reports.figures import registered
-from reports.output import ERRATA_COLUMNS, claims_json, errata_csv, write_atomically
+from reports.invariants import default_properties_path, read_properties, write_properties
+from reports.outdir import MANIFEST, manifest_names
+from reports.output import ERRATA_COLUMNS, claims_json, errata_csv
 from reports.page import build_report, errata_rows, render_page, report_meta
 
 # under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
@@ -149,7 +151,8 @@ def test_the_command_writes_a_report_of_one_chapter(
 
 def test_the_three_files_are_written(report_dir: Path) -> None:
     names = {p.name for p in report_dir.iterdir()} - {"screenshot.png"}  # the browser test's
-    assert sorted(names) == ["claims.json", "errata.csv", "index.html"]
+    assert sorted(names) == [MANIFEST, "claims.json", "errata.csv", "index.html"]
+    assert manifest_names(report_dir) == {"claims.json", "errata.csv", "index.html"}
 
 
 def test_the_page_parses_and_nests(page: Page) -> None:
@@ -224,6 +227,53 @@ def test_quoted_text_is_escaped(appendix: tuple[Evaluation, ScanResult], catalog
     assert parse(html).scripts == 1  # the page's own small script, nothing else
 
 
+INVARIANTS = {
+    "date": "2026-11-22T00:00:00Z",
+    "profile": "ci",
+    "invariants": [
+        {
+            "name": "momentum",
+            "law": "P is conserved",
+            "reference": "(2.1)",
+            "examples": 100,
+            "worst_error": 1e-16,
+            "outcome": "passed",
+        }
+    ],
+}
+
+
+def test_the_report_finds_the_tests_record_from_the_working_directory_up(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """pytest records its invariants in ``.bangcheck/`` at its rootdir; ``bangcheck report``,
+    run anywhere below, shows them without being told where, and writes nothing there."""
+    record = write_properties(tmp_path, INVARIANTS)
+    assert record == tmp_path / ".bangcheck" / "properties.json"
+    assert (tmp_path / ".bangcheck" / ".gitignore").read_text(encoding="utf-8").endswith("*\n")
+    (tmp_path / "sub" / "deeper").mkdir(parents=True)
+    monkeypatch.chdir(tmp_path / "sub" / "deeper")
+    assert default_properties_path() == record
+    out = tmp_path / "out"
+    assert main(["report", "--book", str(book.path), "--chapter", "A1", "--out", str(out)]) == 0
+    capsys.readouterr()
+    assert "P is conserved" in (out / "index.html").read_text(encoding="utf-8")
+    assert sorted(os.listdir(tmp_path / ".bangcheck")) == [".gitignore", "properties.json"]
+
+
+def test_a_record_that_is_not_one_is_a_clear_error(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    bad = tmp_path / "properties.json"
+    bad.write_text("{not json", encoding="utf-8")
+    argv = ["report", "--book", str(book.path), "--chapter", "A1", "--out", str(tmp_path / "o")]
+    assert main([*argv, "--properties", str(bad)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert f"cannot read the invariants record {bad}" in err
+    assert not (tmp_path / "o").exists()
+
+
 def test_properties_are_shown_when_present(
     appendix: tuple[Evaluation, ScanResult], catalog: Catalog, tmp_path: Path
 ) -> None:
@@ -244,10 +294,11 @@ def test_properties_are_shown_when_present(
     }
     path = tmp_path / "properties.json"
     path.write_text(json.dumps(results), encoding="utf-8")
-    html = render_page(evaluation, result, catalog, path, figures=[])
+    html = render_page(evaluation, result, catalog, read_properties(path), figures=[])
     assert 'id="properties"' in html
     assert "P is conserved" in html
-    absent = render_page(evaluation, result, catalog, tmp_path / "absent.json", figures=[])
+    assert read_properties(tmp_path / "absent.json") is None
+    absent = render_page(evaluation, result, catalog, None, figures=[])
     assert 'id="properties"' not in absent
 
 
@@ -271,27 +322,6 @@ def test_the_page_is_self_contained(report_dir: Path) -> None:
     assert not re.search(
         r"""(src|href)=["']?(https?:)?//|url\(\s*["']?(https?:)?//|@import""", html
     )
-
-
-def test_write_is_atomic_and_keeps_properties(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    out = tmp_path / "out"
-    out.mkdir()
-    (out / "old.html").write_text("old", encoding="utf-8")
-    (out / "properties.json").write_text("{}", encoding="utf-8")
-    write_atomically(out, {"index.html": "new"})
-    assert sorted(p.name for p in out.iterdir()) == ["index.html", "properties.json"]
-
-    def refuse(self: Path, target: Path) -> None:
-        raise OSError("disk full")
-
-    monkeypatch.setattr(Path, "rename", refuse)
-    with pytest.raises(OSError, match="disk full"):
-        write_atomically(out, {"index.html": "newer"})
-    monkeypatch.undo()
-    assert (out / "index.html").read_text(encoding="utf-8") == "new"
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["out"]  # no staging left behind
 
 
 def test_a_background_build_gives_the_same_files(

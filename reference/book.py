@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cache
 from importlib.resources import files
@@ -17,6 +18,8 @@ from pathlib import Path
 import tomli
 
 BOOK_ENV = "BANGCHECK_BOOK"
+LINE_DIGESTS = "book-lines.b2"  # package data: the known book's line digests
+LINE_DIGEST_SIZE = 4  # bytes per line: a chance changed line goes unseen once in 4 billion
 
 
 class BookError(Exception):
@@ -93,24 +96,93 @@ def book_path(cli_value: str | os.PathLike[str] | None = None) -> Path:
     return Path(value).expanduser().resolve()
 
 
+def line_digests(lines: Sequence[str]) -> bytes:
+    """Each line's ``LINE_DIGEST_SIZE``-byte BLAKE2b digest, concatenated: the form in which the
+    package ships the known book's lines (``reference/book-lines.b2``), so that a different file
+    can be told apart line by line without shipping the text."""
+    return b"".join(
+        hashlib.blake2b(line.encode("utf-8"), digest_size=LINE_DIGEST_SIZE).digest()
+        for line in lines
+    )
+
+
+@cache
+def known_line_digests() -> tuple[bytes, ...]:
+    """The known book's line digests (package data ``reference/book-lines.b2``), one per line."""
+    data = files("reference").joinpath(LINE_DIGESTS).read_bytes()
+    size = LINE_DIGEST_SIZE
+    return tuple(data[i : i + size] for i in range(0, len(data), size))
+
+
+def _sha256(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def _line_list(numbers: Sequence[int], shown: int = 5) -> str:
+    listed = ", ".join(str(n) for n in numbers[:shown])
+    more = len(numbers) - shown
+    return f"{listed} and {more} more" if more > 0 else listed
+
+
+def describe_difference(data: bytes, ident: Identity) -> str:
+    """How ``data`` differs from the known book, in one clause a user can act on: empty, CRLF
+    line ends, a final newline, another line count, or which lines differ."""
+    if not data:
+        return "the file is empty"
+    if data.replace(b"\r\n", b"\n") != data:
+        crlf = data.count(b"\r\n")
+        if _sha256(data.replace(b"\r\n", b"\n")) == ident.sha256:
+            return (
+                f"it is the book with Windows (CRLF) line ends on {crlf:,} lines; "
+                "convert them to LF (e.g. dos2unix)"
+            )
+        hint = f"it has Windows (CRLF) line ends on {crlf:,} lines, and more differs"
+    else:
+        hint = ""
+    if data.endswith(b"\n") and _sha256(data.rstrip(b"\n")) == ident.sha256:
+        return "it is the book with newline(s) added at the end (the book ends without one)"
+    if data.startswith(b"\xef\xbb\xbf") and _sha256(data[3:]) == ident.sha256:
+        return "it is the book with a byte-order mark added at the start"
+    text = data.decode("utf-8").replace("\r\n", "\n")
+    lines = text.split("\n")
+    known = known_line_digests()
+    mine = line_digests(lines)
+    size = LINE_DIGEST_SIZE
+    differ = [
+        i + 1
+        for i in range(min(len(lines), len(known)))
+        if mine[i * size : (i + 1) * size] != known[i]
+    ]
+    parts = [hint] if hint else []
+    if len(lines) != ident.lines:
+        parts.append(f"it has {len(lines):,} lines, the book {ident.lines:,}")
+        if differ:
+            parts.append(f"the first line that differs is line {differ[0]}")
+    elif differ:
+        if len(differ) == 1:
+            parts.append(f"line {differ[0]} differs from the book's")
+        else:
+            parts.append(f"{len(differ):,} lines differ from the book's: {_line_list(differ)}")
+    return "; ".join(parts) or "its bytes differ from the book's"
+
+
 @cache
 def load_book(path: Path) -> Book:
-    """Read the book at ``path`` and check it is the file ``reference/book.toml`` describes."""
+    """Read the book at ``path`` and check it is the file ``reference/book.toml`` describes;
+    ``BookError`` says how a different file differs."""
     ident = identity()
     try:
         data = path.read_bytes()
     except OSError as err:
         raise BookError(f"cannot read the book at {path}: {err.strerror or err}") from err
-    digest = hashlib.sha256(data).hexdigest()
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as err:
         raise BookError(f"{path} is not UTF-8 text, so not the book: {err}") from err
     lines = tuple(text.split("\n"))
-    if digest != ident.sha256 or len(lines) != ident.lines:
+    if _sha256(data) != ident.sha256 or len(lines) != ident.lines:
         raise BookError(
-            f"{path} is not the book the catalog cites: sha256 {digest[:12]}... with "
-            f"{len(lines)} lines, expected {ident.sha256[:12]}... with {ident.lines} lines"
+            f"{path} is not the book the catalog cites: {describe_difference(data, ident)}"
         )
     return Book(path, lines, ident)
 
@@ -118,21 +190,31 @@ def load_book(path: Path) -> Book:
 def chapter_keys(spec: str | None) -> tuple[str, ...]:
     """The chapter keys selected by a ``--chapter`` spec ("8", "0-3", "4,5", "A1"; None: all).
 
-    Raises ``ValueError`` naming the part of the spec it cannot read.
+    Leading zeros and the case of "A1" do not matter ("04", "a1"). Raises ``ValueError`` naming
+    the part of the spec it cannot read, or for an empty spec.
     """
     keys = [c.key for c in identity().chapters]
-    if spec is None or not spec.strip():
+    if spec is None:
         return tuple(keys)
+    if not spec.strip():
+        raise ValueError(f"empty chapter spec: give e.g. 8, 0-3, 4,5 or A1 (chapters {keys})")
     chosen: list[str] = []
     for part in spec.split(","):
         part = part.strip()
         lo, sep, hi = part.partition("-")
         if sep:
+            lo, hi = _chapter_key(lo), _chapter_key(hi)
             if lo not in keys or hi not in keys or keys.index(lo) > keys.index(hi):
                 raise ValueError(f"bad chapter range {part!r}: use e.g. 0-3 (chapters {keys})")
             chosen.extend(keys[keys.index(lo) : keys.index(hi) + 1])
-        elif part in keys:
-            chosen.append(part)
+        elif _chapter_key(part) in keys:
+            chosen.append(_chapter_key(part))
         else:
             raise ValueError(f"unknown chapter {part!r}: chapters are {', '.join(keys)}")
     return tuple(k for k in keys if k in chosen)
+
+
+def _chapter_key(text: str) -> str:
+    """A chapter as typed ("04", "a1", " 8") in the catalog's spelling ("4", "A1", "8")."""
+    text = text.strip().upper()
+    return str(int(text)) if text.isdigit() else text

@@ -73,9 +73,38 @@ def default_directory() -> Traversable:
     return files("reference").joinpath(CLAIMS_PACKAGE_DIR)
 
 
-def display_name(path: Traversable | Path) -> str:
-    """How problem lines name a catalog file: ``reference/claims/ch08.toml``."""
-    return f"reference/{CLAIMS_PACKAGE_DIR}/{path.name}"
+class CatalogDirectoryError(ValueError):
+    """A catalog directory given by the user that is missing or holds no catalog files."""
+
+
+def display_name(path: Traversable | Path, packaged: bool) -> str:
+    """How problem lines name a catalog file: ``reference/claims/ch08.toml`` for the packaged
+    catalog, else the path as the user gave its directory (``draft/ch08.toml``)."""
+    return f"reference/{CLAIMS_PACKAGE_DIR}/{path.name}" if packaged else str(path)
+
+
+def catalog_paths(directory: Traversable | Path | None = None) -> list[Traversable | Path]:
+    """The ``ch*.toml`` files of ``directory`` (default: the packaged catalog), by name.
+
+    A directory given by the user that is missing, not a directory or holds no such file raises
+    ``CatalogDirectoryError`` (a draft catalog needs at least one chapter file).
+    """
+    root = directory if directory is not None else default_directory()
+    if directory is not None and not root.is_dir():
+        raise CatalogDirectoryError(f"--catalog {directory}: not a directory")
+    paths = sorted(
+        (p for p in root.iterdir() if p.name.startswith("ch") and p.name.endswith(".toml")),
+        key=lambda p: p.name,
+    )
+    if not paths and directory is not None:
+        hint = ""
+        if isinstance(root, Path) and (root / CLAIMS_PACKAGE_DIR).is_dir():
+            hint = f" (did you mean {root / CLAIMS_PACKAGE_DIR}?)"
+        raise CatalogDirectoryError(
+            f"--catalog {directory}: holds no catalog files (ch00.toml ... ch12.toml, "
+            f"chA1.toml){hint}"
+        )
+    return paths
 
 
 def _entry_problems(name: str, ident: str, err: ValidationError) -> list[Problem]:
@@ -128,6 +157,13 @@ class ParsedFile:
     rejected: frozenset[str]
 
 
+def _read_text(path: Traversable | Path) -> str:
+    try:
+        return path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as err:
+        raise CatalogDirectoryError(f"cannot read the catalog file {path}: {err}") from err
+
+
 @lru_cache(maxsize=64)
 def parse_file(name: str, text: str) -> ParsedFile:
     """Parse one catalog file's text and check each entry against the schema.
@@ -165,13 +201,12 @@ def read_catalog(
     directory: Traversable | Path | None = None,
 ) -> tuple[Catalog, list[Problem]]:
     """Parse every ``ch*.toml`` of ``directory`` (default: the packaged catalog), keeping the
-    entries that pass the schema, and return them with the schema problems found."""
-    root = directory if directory is not None else default_directory()
-    paths = sorted(
-        (p for p in root.iterdir() if p.name.startswith("ch") and p.name.endswith(".toml")),
-        key=lambda p: p.name,
-    )
-    parsed = [parse_file(display_name(p), p.read_text(encoding="utf-8")) for p in paths]
+    entries that pass the schema, and return them with the schema problems found; problems
+    name each file as ``display_name`` does. ``CatalogDirectoryError`` as ``catalog_paths``."""
+    packaged = directory is None
+    parsed = [
+        parse_file(display_name(p, packaged), _read_text(p)) for p in catalog_paths(directory)
+    ]
     problems = [problem for f in parsed for problem in f.problems]
     rejected = frozenset().union(*(f.rejected for f in parsed))
     chapter_files = tuple(f.chapter_file for f in parsed if f.chapter_file is not None)

@@ -16,11 +16,21 @@ from typing import Any
 
 from reference.book import BookError, book_path, chapter_keys, load_book
 from reference.calls import ModelCallError
+from reference.catalog import CatalogDirectoryError, catalog_paths
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
 from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
+from reports import bangcheck_version
+from reports.invariants import (
+    CACHE_DIR,
+    PROPERTIES_FILE,
+    PropertiesError,
+    default_properties_path,
+    read_properties,
+)
+from reports.outdir import OutputError, check_target, write_report_dir
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 
@@ -30,6 +40,7 @@ def _parser() -> argparse.ArgumentParser:
         prog="bangcheck",
         description="Check the numbers of Classical Mechanics with a BANG! (Unit 1).",
     )
+    parser.add_argument("--version", action="version", version=f"bangcheck {bangcheck_version()}")
     sub = parser.add_subparsers(dest="command", required=True)
     common = argparse.ArgumentParser(add_help=False)
     common.add_argument("--book", help="path of bang-unit1.txt (default: $BANGCHECK_BOOK)")
@@ -52,13 +63,18 @@ def _parser() -> argparse.ArgumentParser:
 
     report = sub.add_parser("report", parents=[common], help="the errata report (HTML, CSV, JSON)")
     report.add_argument(
-        "--out", type=Path, default=Path("reports/out"), help="output directory (reports/out)"
+        "--out",
+        type=Path,
+        default=Path("reports/out"),
+        help="output directory (reports/out); written only when it is missing, empty or a "
+        "previous report",
     )
     report.add_argument(
         "--properties",
         type=Path,
-        default=Path("reports/out/properties.json"),
-        help="the property suite's results, shown when present (reports/out/properties.json)",
+        default=None,
+        help="the property suite's record of its invariants, shown when present (default: "
+        f"the nearest {CACHE_DIR}/{PROPERTIES_FILE}, which pytest writes)",
     )
     return parser
 
@@ -73,6 +89,14 @@ def _fmt(value: Any) -> str:
 
 def _failing(evaluation: Evaluation, strict: bool) -> list[str]:
     return [c.id for c in evaluation if not c.passed and (c.verdict != "unmodeled" or strict)]
+
+
+def _say_failing(failing: list[str]) -> None:
+    print(
+        f"bangcheck: {len(failing)} claim(s) differ from expect: {', '.join(failing[:10])}"
+        + (f" and {len(failing) - 10} more" if len(failing) > 10 else ""),
+        file=sys.stderr,
+    )
 
 
 def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) -> None:
@@ -102,10 +126,7 @@ def _claims(args: argparse.Namespace) -> int:
     print(f"bangcheck: {len(evaluation)} claims: {summary or 'none'}", file=sys.stderr)
     failing = _failing(evaluation, args.strict)
     if failing:
-        print(
-            f"bangcheck: {len(failing)} claim(s) differ from expect: {', '.join(failing[:10])}",
-            file=sys.stderr,
-        )
+        _say_failing(failing)
         return EXIT_FINDINGS
     return EXIT_OK
 
@@ -184,20 +205,29 @@ def _scan(args: argparse.Namespace) -> int:
 
 
 def _report(args: argparse.Namespace) -> int:
-    from reports.output import write_atomically
     from reports.page import build_report
 
+    out = args.out.resolve()
+    check_target(out)  # before the work: a refused directory is said at once
+    properties = read_properties((args.properties or default_properties_path()).resolve())
     book = load_book(book_path(args.book))
     catalog = checked_catalog(book, args.catalog)
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
     result = scan(book, catalog, args.chapters)
     print("bangcheck: rendering the report", file=sys.stderr)
-    properties = args.properties.resolve()
     files = build_report(evaluation, result, catalog, properties)
-    out = args.out.resolve()
-    write_atomically(out, files)
+    write_report_dir(out, files)
     print(f"bangcheck: wrote {out / 'index.html'}, errata.csv and claims.json", file=sys.stderr)
     print(out / "index.html")
+    failing = _failing(evaluation, strict=False)
+    if failing:
+        _say_failing(failing)
+        print(
+            "bangcheck: the report marks them: their verdicts are not findings about the book "
+            "until the catalog or the model is fixed",
+            file=sys.stderr,
+        )
+        return EXIT_FINDINGS
     return EXIT_OK
 
 
@@ -218,11 +248,14 @@ def _run(argv: Sequence[str] | None) -> int:
         args.chapters = chapter_keys(args.chapter)
     except ValueError as err:
         parser.error(str(err))
-    if args.catalog is not None and not args.catalog.is_dir():
-        parser.error(f"--catalog {args.catalog}: not a directory")
+    if args.catalog is not None:
+        try:
+            catalog_paths(args.catalog)
+        except CatalogDirectoryError as err:
+            parser.error(str(err))
     try:
         return {"claims": _claims, "scan": _scan, "report": _report}[args.command](args)
-    except BookError as err:
+    except (BookError, CatalogDirectoryError, OutputError, PropertiesError) as err:
         print(f"bangcheck: error: {err}", file=sys.stderr)
     except CatalogError as err:
         print(

@@ -7,11 +7,8 @@ everything it quotes from the book or the catalog shows as text.
 
 from __future__ import annotations
 
-import json
 from collections import Counter
 from dataclasses import dataclass
-from importlib.metadata import PackageNotFoundError, version
-from pathlib import Path
 from typing import Any
 
 from jinja2 import Environment, PackageLoader, select_autoescape
@@ -22,18 +19,11 @@ from reference.compare import VERDICTS
 from reference.evaluation import EvaluatedClaim, Evaluation
 from reference.locate import find
 from reference.scan import ScanResult
+from reports import bangcheck_version
 from reports.figures import RenderedFigure, render_all, verdict_chart
 from reports.output import claims_json, errata_csv
 
 EXAMPLES_PER_RULE = 3
-
-
-def bangcheck_version() -> str:
-    """The installed bangcheck version."""
-    try:
-        return version("bangcheck")
-    except PackageNotFoundError:  # pragma: no cover - running from an uninstalled tree
-        return "unknown"
 
 
 @dataclass(frozen=True)
@@ -158,12 +148,6 @@ def report_meta(evaluation: Evaluation, scan: ScanResult) -> dict[str, Any]:
     }
 
 
-def _properties(path: Path | None) -> dict[str, Any] | None:
-    if path is None or not path.is_file():
-        return None
-    return json.loads(path.read_text(encoding="utf-8"))
-
-
 def _environment() -> Environment:
     return Environment(
         loader=PackageLoader("reports", "templates"),
@@ -177,7 +161,7 @@ def render_page(
     evaluation: Evaluation,
     scan: ScanResult,
     catalog: Catalog,
-    properties: Path | None,
+    properties: dict[str, Any] | None,
     figures: list[RenderedFigure],
 ) -> str:
     """The report page as one HTML string, with ``figures`` already rendered
@@ -219,9 +203,10 @@ def render_page(
         coverage=_coverage(scan),
         errata=errata,
         chapters=chapters,
+        failing=[c for c in evaluation if not c.passed and c.verdict != "unmodeled"],
         figures=figures,
         unmodeled=[c for c in evaluation if c.verdict == "unmodeled"],
-        properties=_properties(properties),
+        properties=properties,
         slips=slips,
         assumptions=[c for c in evaluation if c.assumptions],
         tolerances=[
@@ -238,7 +223,7 @@ def build_report(
     evaluation: Evaluation,
     scan: ScanResult,
     catalog: Catalog,
-    properties: Path | None,
+    properties: dict[str, Any] | None,
     figure_workers: int | None = None,
 ) -> dict[str, str]:
     """The report's files by name: ``index.html``, ``errata.csv``, ``claims.json``; the

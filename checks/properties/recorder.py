@@ -3,28 +3,27 @@
 For every test marked ``properties`` it records the invariant (the test's name), the law (its
 docstring's first paragraph), the book's equations and figures the docstring cites, how many
 examples ran, the worst value of any ``hypothesis.target`` score (the suite targets its
-conservation errors there) and the outcome. At the end of the session the controller (not an
-xdist worker) writes ``reports/out/properties.json``, which ``bangcheck report`` shows with its
-date. Examples and scores come from the run statistics Hypothesis hands to
-``hypothesis.statistics.collector`` once per test (the same ones its pytest plugin prints with
-``--hypothesis-show-statistics``); they cost nothing per example.
+conservation errors there) and the outcome. At the end of the session the controller (not an xdist
+worker) writes ``.bangcheck/properties.json`` in pytest's rootdir (``reports.invariants``), which
+``bangcheck report`` shows with its date. Examples and scores come from the run statistics
+Hypothesis hands to ``hypothesis.statistics.collector`` once per test (the same ones its pytest
+plugin prints with ``--hypothesis-show-statistics``); they cost nothing per example.
 """
 
 from __future__ import annotations
 
 import inspect
-import json
 import re
 from collections.abc import Generator
 from datetime import UTC, datetime
-from pathlib import Path
 from typing import Any
 
 import pytest
 from hypothesis import settings
 from hypothesis.statistics import collector
 
-OUTPUT = Path("reports") / "out" / "properties.json"
+from reports.invariants import write_properties
+
 _REFERENCE = re.compile(r"\((?:\d+|1\.A)\.\d+[a-z]?\)|Figs?\. \d+\.\d+(?:\([a-z]\)|[a-z])?")
 _KEY = "bangcheck-invariant"
 
@@ -96,11 +95,9 @@ class InvariantRecorder:
     def pytest_sessionfinish(self, session: pytest.Session) -> None:
         if hasattr(self.config, "workerinput") or not self.records:
             return  # an xdist worker, or no property ran: the controller writes, once
-        path = self.config.rootpath / OUTPUT
-        path.parent.mkdir(parents=True, exist_ok=True)
         data = {
             "date": datetime.now(UTC).isoformat(timespec="seconds"),
             "profile": settings.get_current_profile_name(),
             "invariants": sorted(self.records, key=lambda r: (r["module"], r["name"])),
         }
-        path.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
+        write_properties(self.config.rootpath, data)
