@@ -250,3 +250,14 @@ def test_a_different_book_says_how_it_differs(
     assert err.count("\n") == 1
     assert f"{wrong} is not the book the catalog cites: " in err
     assert says in err
+
+
+def test_an_interrupt_is_one_line_and_exit_130(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    def interrupted(book: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("reports.cli.load_book", interrupted)
+    code, out, err = run(capsys, "scan", "--book", "book.txt")
+    assert (code, out, err) == (130, "", "bangcheck: interrupted\n")

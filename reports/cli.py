@@ -33,6 +33,7 @@ from reports.invariants import (
 from reports.outdir import OutputError, check_target, write_report_dir
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report it
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -239,6 +240,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         # the reader went away (``bangcheck scan | head``): stop quietly, as Unix tools do
         sys.stderr.close()
         return EXIT_OK
+    except KeyboardInterrupt:
+        # the report's directory is swapped in by renames: an interrupted run leaves the
+        # previous report, or debris the next run cleans up
+        print("bangcheck: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
 
 
 def _run(argv: Sequence[str] | None) -> int:

@@ -47,6 +47,7 @@ def write_properties(root: Path, data: dict[str, Any]) -> Path:
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as handle:
             handle.write(json.dumps(data, indent=1) + "\n")
+        os.chmod(temporary, 0o666 & ~_umask())  # mkstemp's file is private; this one is not
         os.replace(temporary, target)
     except BaseException:
         Path(temporary).unlink(missing_ok=True)
@@ -56,6 +57,12 @@ def write_properties(root: Path, data: dict[str, Any]) -> Path:
 
 class PropertiesError(ValueError):
     """A record that exists but cannot be read; the message names the file."""
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def read_properties(path: Path | None) -> dict[str, Any] | None:
