@@ -171,3 +171,17 @@ def test_to_frame_gives_one_row_per_claim(evaluation: Evaluation) -> None:
     assert len(frame) == len(evaluation)
     assert list(frame["id"]) == [c.id for c in evaluation]
     assert {"verdict", "model_value", "tolerance"} <= set(frame.columns)
+
+
+def test_every_input_interval_contains_its_own_model_value(evaluation: Evaluation) -> None:
+    """An input interval is the model's range over the box of rounded inputs: it contains the
+    model's value at the nominal inputs (and at the box's centre), or it was computed wrong (a
+    model not monotonic over its box, judged from its corners alone)."""
+    outside = [
+        (c.id, c.model_value, c.interval)
+        for c in evaluation
+        if c.interval is not None
+        and isinstance(c.model_value, float | int)
+        and not c.interval[0] <= c.model_value <= c.interval[1]
+    ]
+    assert not outside

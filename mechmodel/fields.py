@@ -284,6 +284,19 @@ def density(mass: Any, volume: Any) -> Any:
     return mass / volume
 
 
+def ball_density(mass: Any, radius: Any) -> Any:
+    """Mean density of a ball of ``mass`` (kg) and ``radius`` (m), mass / (4 pi r^3 / 3),
+    kg/m^3: a nucleus's mass over the volume its radius gives (Ch. 9, nuclear matter)."""
+    inputs.mass(mass, "mass")
+    return density(mass, sphere_volume(radius))
+
+
+def mass_as_dense_as(mass: Any, radius: Any, volume: Any) -> Any:
+    """Mass (kg) of ``volume`` (m^3) of matter as dense as a ball of ``mass`` (kg) and
+    ``radius`` (m): a fingertip of nuclear matter (Ch. 9, the neutron starlet)."""
+    return mass_of(ball_density(mass, radius), volume)
+
+
 def mass_of(density: Any, volume: Any) -> Any:
     """Mass of ``volume`` of matter of ``density``, kg (a fingertip of nuclear matter)."""
     inputs.positive(density, "density")
@@ -488,6 +501,13 @@ def tunnel_period(g: Any, radius: Any) -> float:
 def tunnel_transit_time(g: Any, radius: Any) -> float:
     """Time to fall through a tunnel to the far end, half a period: pi sqrt(R / g) (Fig. 9.8)."""
     return tunnel_period(g, radius) / 2
+
+
+def round_trip_time(transit: Any) -> Any:
+    """A full tunnel period from a one-way transit time: there and back, twice the transit
+    (the 84-minute period from the 42 minutes of Fig. 9.8), in the transit's unit."""
+    inputs.positive(transit, "transit")
+    return 2 * transit
 
 
 def circular_orbit_period(g: Any, radius: Any) -> float:

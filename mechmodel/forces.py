@@ -463,6 +463,13 @@ def fall_from_height(height: Any, g: Any) -> Fall:
     return Fall(time=speed / gm, speed=speed, speed_squared_per_g=speed * speed / gm)
 
 
+def same_speed(speed: Any) -> Any:
+    """A speed the book restates in another unit ("24 meters per sec. or 55 mph", Fig. 7.3),
+    SI: the value itself, which the evaluator converts to the printed unit."""
+    inputs.real(speed, "speed")
+    return speed
+
+
 def launch_speed(height: Any, g: Any) -> float:
     """Launch speed that tosses a ball to ``height``, V = sqrt(2 g h) (6.13b), m/s."""
     return fall_from_height(height, g).speed

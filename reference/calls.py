@@ -2,8 +2,9 @@
 
 ``args`` values are numbers, lists, strings "p/q" (a Fraction) or ``{ claim = ID }``: that claim's
 value, in SI where it has a physical unit, as printed where it is ``scaled`` or ``1``. Inputs that
-are rounded (referenced derived or identity claims, givens with ``rounded = true``) span a box
-[v - h, v + h]; the model evaluated at the box's corners gives the claim's input interval.
+are rounded (design 3a: referenced claims that are not exact inputs, givens with ``rounded =
+true``, rounded assumptions) span a box [v - h, v + h]; the model evaluated at the box's corners
+(or, for a model not monotonic over it, on a grid) gives the claim's input interval.
 """
 
 from __future__ import annotations
@@ -16,11 +17,12 @@ from fractions import Fraction
 from typing import Any
 
 from reference.models import follow, resolve
-from reference.numbers import Printed
-from reference.schema import Claim, ClaimRef
+from reference.numbers import Printed, parse_number
+from reference.schema import Assumption, Claim, ClaimRef
 from reference.tables import NO_CONVERSION, unit_factor
 
 MAX_ROUNDED_INPUTS = 10  # 2^10 corners at most; beyond that no interval is computed
+MAX_GRID_POINTS = 3**6  # a model not monotonic over its box: 729 calls at most
 _FRACTION_ARG = re.compile(r"-?\d+/\d+")
 
 
@@ -67,22 +69,20 @@ def input_half_width(claim: Claim, printed: Printed) -> Any:
     return float(h) * unit_factor(claim.unit)
 
 
-def is_rounded(claim: Claim) -> bool:
-    """Whether a referenced claim's printed value is a rounded number."""
-    return claim.kind in ("derived", "identity") or (claim.kind == "given" and claim.rounded)
-
-
 def build_args(
-    raw: dict[str, Any], lookup: Callable[[str], tuple[Claim, Printed]]
+    raw: dict[str, Any],
+    lookup: Callable[[str], tuple[Claim, Printed]],
+    rounded: Callable[[str], bool],
 ) -> tuple[dict[str, Any], list[Input]]:
-    """Concrete keyword arguments for a model, and the referenced inputs among them."""
+    """Concrete keyword arguments for a model, and the referenced inputs among them;
+    ``rounded(id)`` says whether a referenced claim is a rounded input (design 3a)."""
     inputs: list[Input] = []
 
     def convert(value: Any, path: tuple[str | int, ...]) -> Any:
         if isinstance(value, ClaimRef):
             ref, printed = lookup(value.claim)
-            rounded = is_rounded(ref) and bool(printed.half_width)
-            inputs.append(Input(path, ref.id, rounded, input_half_width(ref, printed)))
+            is_rounded = rounded(ref.id) and bool(printed.half_width)
+            inputs.append(Input(path, ref.id, is_rounded, input_half_width(ref, printed)))
             return input_value(ref, printed)
         if isinstance(value, list):
             return [convert(item, (*path, i)) for i, item in enumerate(value)]
@@ -92,6 +92,25 @@ def build_args(
         return value
 
     args = {name: convert(value, (name,)) for name, value in raw.items()}
+    return args, inputs
+
+
+def assumed_args(
+    assumptions: dict[str, int | float | str | Assumption],
+) -> tuple[dict[str, Any], list[Input]]:
+    """The assumptions as keyword arguments, and the rounded ones as inputs of the box (an
+    assumption ``{ value = "24", rounded = true }`` spans 23.5 to 24.5)."""
+    args: dict[str, Any] = {}
+    inputs: list[Input] = []
+    for name, assumed in assumptions.items():
+        if not isinstance(assumed, Assumption):
+            args[name] = assumed
+            continue
+        printed = parse_number(str(assumed.value))
+        value = printed.value
+        args[name] = int(value) if value.denominator == 1 else float(value)
+        if assumed.rounded and printed.half_width:
+            inputs.append(Input((name,), f"assumption {name}", True, float(printed.half_width)))
     return args, inputs
 
 
@@ -116,11 +135,38 @@ def input_at(args: dict[str, Any], path: tuple[str | int, ...]) -> Any:
 
 def corners(args: dict[str, Any], rounded: list[Input]) -> Iterator[dict[str, Any]]:
     """The model's arguments at every corner of the box of input roundings."""
-    for signs in itertools.product((-1, 1), repeat=len(rounded)):
+    yield from box_points(args, rounded, (-1, 1))
+
+
+def box_points(
+    args: dict[str, Any], rounded: list[Input], steps: tuple[float, ...]
+) -> Iterator[dict[str, Any]]:
+    """The model's arguments at every point of the grid whose coordinates are ``v + s h`` for
+    each rounded input (value v, half-width h) and each s in ``steps`` (from -1 to 1)."""
+    for signs in itertools.product(steps, repeat=len(rounded)):
         out = args
         for sign, r in zip(signs, rounded, strict=True):
             out = replace_input(out, r.path, input_at(out, r.path) + sign * r.half_width)
         yield out
+
+
+def grid_steps(count: int) -> tuple[float, ...] | None:
+    """The grid for a model not monotonic over its box of ``count`` rounded inputs: corners,
+    centre and points between, as many as stay within ``MAX_GRID_POINTS`` model calls; None
+    when not even corners and centre fit."""
+    for steps in ((-1, -0.5, 0, 0.5, 1), (-1, 0, 1)):
+        if len(steps) ** count <= MAX_GRID_POINTS:
+            return steps
+    return None
+
+
+def centre(args: dict[str, Any], rounded: list[Input]) -> dict[str, Any]:
+    """The model's arguments at the centre of the box (the midpoint of its extreme corners)."""
+    out = args
+    for r in rounded:
+        v = input_at(out, r.path)
+        out = replace_input(out, r.path, ((v - r.half_width) + (v + r.half_width)) / 2)
+    return out
 
 
 def _freeze(value: Any) -> Any:

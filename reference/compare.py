@@ -1,8 +1,14 @@
-"""Verdicts: how a printed value compares with the model's (design section 3).
+"""Verdicts: how a printed value compares with the model's (design sections 3 and 3a).
 
 All arithmetic is on exact rationals: the printed string's exact value, the model's float taken
 exactly. ``h`` is half a unit of the last counted digit; "inside" means ``|model - printed| <=
 h (1 + 1e-9)`` so that a float such as 5.749999999999999 still rounds to "5.8".
+
+A verdict depends on the printed value and on a ``Context``: what the model said (its value,
+its range over the box of rounded inputs, its declared error) and what the claim declares (its
+relation, a truncation, a constant's uncertainty). The context is fixed once the model has been
+called, so that ``judge`` can judge any other printed string exactly as the real one was judged:
+``reference.power`` misprints every claim that way, without calling a model again.
 """
 
 from __future__ import annotations
@@ -23,6 +29,7 @@ VERDICTS: tuple[Verdict, ...] = (
     "unmodeled",
     "indeterminate",
 )
+# "other-way" (within 2h) stays in the vocabulary for old outputs; it is no longer produced
 RoundingReason = Literal["truncation", "other-way", "input-rounding"]
 
 SLACK = Fraction(1, 10**9)
@@ -35,6 +42,29 @@ class Judgement:
     verdict: Verdict
     reason: RoundingReason | None
     tolerance: Fraction | None
+
+
+@dataclass(frozen=True)
+class Context:
+    """What a claim's verdict depends on besides its printed value.
+
+    ``model`` is the model's value in the printed unit (the real part, with ``imag`` the
+    imaginary part that must vanish); ``interval`` its range over the box of rounded inputs;
+    ``error`` its declared numerical error; ``extra`` widens h (twice a constant's standard
+    uncertainty); ``exact_only`` admits no rounding at all (a count, a whole datum printed
+    whole); ``truncation`` is a truncation the claim declares.
+    """
+
+    model: Fraction
+    relation: str = "="
+    imag: Fraction = Fraction(0)
+    interval: tuple[Fraction, Fraction] | None = None
+    error: Fraction | None = None
+    extra: Fraction = Fraction(0)
+    exact_only: bool = False
+    truncation: bool = False
+    rel_tol: Fraction | None = None
+    bounds: tuple[Printed, Printed] | None = None
 
 
 def exact(value: float | int | Fraction) -> Fraction:
@@ -51,11 +81,12 @@ def exact(value: float | int | Fraction) -> Fraction:
     return Fraction(f)
 
 
-def _inside(diff: Fraction, tol: Fraction) -> bool:
+def inside(diff: Fraction, tol: Fraction) -> bool:
+    """Whether a difference lies within a tolerance (with the 1e-9 slack for floats)."""
     return diff <= tol * (1 + SLACK)
 
 
-def _is_truncation(printed: Printed, model: Fraction) -> bool:
+def is_truncation(printed: Printed, model: Fraction) -> bool:
     """Whether the printed value is the model cut toward zero at the printed digit."""
     q = printed.quantum
     if q is None:
@@ -64,70 +95,83 @@ def _is_truncation(printed: Printed, model: Fraction) -> bool:
     return cut == abs(printed.value) and (model >= 0) == (printed.value >= 0)
 
 
-def judge_equal(
-    printed: Printed,
-    model: Fraction,
-    *,
-    extra: Fraction = Fraction(0),
-    interval: tuple[Fraction, Fraction] | None = None,
-    exact_only: bool = False,
-) -> Judgement:
-    """Verdict of the relation ``=``.
+def _in_interval(printed: Printed, interval: tuple[Fraction, Fraction], tol: Fraction) -> bool:
+    lo, hi = interval
+    if printed.absolute:
+        lo, hi = sorted((abs(lo), abs(hi))) if lo * hi >= 0 else (Fraction(0), max(-lo, hi))
+    slack = tol * (1 + SLACK)
+    return lo - slack <= printed.value <= hi + slack
 
-    ``extra`` widens h (twice a constant's uncertainty). ``interval`` is the model's range over
-    the box of input roundings; a value inside it (widened by h) is ``input-rounding``, the
-    most telling reason, before truncation and other-way rounding within 2h. ``exact_only`` (a
-    count) admits no rounding.
+
+def judge_equal(printed: Printed, ctx: Context, model: Fraction | None = None) -> Judgement:
+    """Verdict of the relation ``=`` (at ``model``, default the context's).
+
+    Verified within h (widened by ``extra``); else ``rounding`` only for a value inside the
+    input interval widened by h (``input-rounding``) or a truncation the claim declares;
+    otherwise ``erratum``. An exact model value therefore admits no rounding but a declared
+    truncation.
     """
-    target = printed.value
-    value = abs(model) if printed.absolute else model
-    diff = abs(value - target)
-    tol = printed.tolerance + extra
-    if exact_only:
+    value = ctx.model if model is None else model
+    if printed.absolute:
+        value = abs(value)
+    diff = abs(value - printed.value)
+    tol = printed.tolerance + ctx.extra
+    if ctx.exact_only:
         return Judgement("verified" if diff == 0 else "erratum", None, Fraction(0))
-    if _inside(diff, tol):
+    if inside(diff, tol):
         return Judgement("verified", None, tol)
-    if interval is not None:
-        lo, hi = interval
-        if printed.absolute:
-            lo, hi = sorted((abs(lo), abs(hi))) if lo * hi >= 0 else (Fraction(0), max(-lo, hi))
-        if lo - tol * (1 + SLACK) <= target <= hi + tol * (1 + SLACK):
-            return Judgement("rounding", "input-rounding", tol)
-    if not printed.exact and _inside(diff, 2 * printed.half_width + extra):
-        reason: RoundingReason = "truncation" if _is_truncation(printed, value) else "other-way"
-        return Judgement("rounding", reason, tol)
+    if ctx.interval is not None and _in_interval(printed, ctx.interval, tol):
+        return Judgement("rounding", "input-rounding", tol)
+    if ctx.truncation and is_truncation(printed, value):
+        return Judgement("rounding", "truncation", tol)
     return Judgement("erratum", None, tol)
 
 
-def judge_relation(
-    relation: str,
-    printed: Printed,
-    model: Fraction,
-    *,
-    rel_tol: float | None = None,
-    bounds: tuple[Printed, Printed] | None = None,
-) -> Judgement:
+def judge_relation(printed: Printed, ctx: Context, model: Fraction | None = None) -> Judgement:
     """Verdict of ``~``, ``<``, ``>``, ``<=``, ``>=``, ``between`` and ``order`` (read: model REL
     printed). These give only ``verified`` or ``erratum``."""
+    value = ctx.model if model is None else model
     target = printed.value
+    relation = ctx.relation
     if relation == "~":
-        assert rel_tol is not None
-        tol = Fraction(rel_tol) * abs(target)
-        ok = abs(model - target) <= tol
-        return Judgement("verified" if ok else "erratum", None, tol)
+        assert ctx.rel_tol is not None
+        tol = ctx.rel_tol * abs(target)
+        return Judgement("verified" if abs(value - target) <= tol else "erratum", None, tol)
     if relation == "between":
-        assert bounds is not None
-        ok = bounds[0].value <= model <= bounds[1].value
+        assert ctx.bounds is not None
+        ok = ctx.bounds[0].value <= value <= ctx.bounds[1].value
     elif relation == "order":
-        ok = in_order_of(model, target)
+        ok = in_order_of(value, target)
     else:
         ok = {
-            "<": model < target,
-            ">": model > target,
-            "<=": model <= target,
-            ">=": model >= target,
+            "<": value < target,
+            ">": value > target,
+            "<=": value <= target,
+            ">=": value >= target,
         }[relation]
     return Judgement("verified" if ok else "erratum", None, None)
+
+
+def _judge_at(printed: Printed, ctx: Context, model: Fraction) -> Judgement:
+    if ctx.relation == "=":
+        judgement = judge_equal(printed, ctx, model)
+    else:
+        judgement = judge_relation(printed, ctx, model)
+    if judgement.verdict != "erratum" and ctx.imag and abs(ctx.imag) > printed.tolerance:
+        # a complex model value meets a real printed one: its imaginary part must vanish
+        return Judgement("erratum", None, judgement.tolerance)
+    return judgement
+
+
+def judge(printed: Printed, ctx: Context) -> Judgement:
+    """The verdict of ``printed`` in ``ctx``; ``indeterminate`` where it would change within
+    the model's declared error."""
+    judgement = _judge_at(printed, ctx, ctx.model)
+    if ctx.error:
+        for sign in (-1, 1):
+            if _judge_at(printed, ctx, ctx.model + sign * ctx.error).verdict != judgement.verdict:
+                return Judgement("indeterminate", None, judgement.tolerance)
+    return judgement
 
 
 def in_order_of(model: Fraction, printed: Fraction) -> bool:

@@ -1,7 +1,8 @@
 """Automatic diagnosis of an erratum from its printed and correct strings (design section 3).
 
 Tried in order: sign, decimal-shift (ratio a power of ten), digit-swap (two adjacent digits
-exchanged), dropped or extra digit, factor (a simple ratio such as 2, 1/2, pi), otherwise none.
+exchanged), last-digit (one unit of the last digit away), dropped or extra digit, factor (a
+simple ratio such as 2, 1/2, pi), otherwise none.
 It is shown beside the curator's diagnosis, never instead of it.
 """
 
@@ -79,6 +80,11 @@ def diagnose(printed: Printed, correct: Printed) -> AutoDiagnosis | None:
     if (p > 0) == (c > 0):
         if _one_adjacent_swap(pd, cd):
             return AutoDiagnosis("digit-swap", f"digits {cd} printed as {pd}")
+        unit = printed.quantum
+        if unit is not None and correct.quantum == unit and abs(p - c) == unit:
+            return AutoDiagnosis(
+                "last-digit", f"the last digit is one unit off ({cd} printed as {pd})"
+            )
         if _one_deleted(cd, pd):
             return AutoDiagnosis("dropped-digit", f"digits {cd} printed as {pd}")
         if _one_deleted(pd, cd):

@@ -7,10 +7,11 @@ against the book, calls each claim's model once (cached on model and arguments),
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import sys
 from collections import Counter
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from decimal import Decimal
 from fractions import Fraction
@@ -18,15 +19,26 @@ from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
 from reference.book import Book, book_path, chapter_keys, load_book
-from reference.calls import MAX_ROUNDED_INPUTS, ModelCache, ModelCallError, build_args, corners
-from reference.catalog import Catalog, ChapterFile
-from reference.compare import Judgement, Verdict, exact, judge_equal, judge_relation
+from reference.calls import (
+    MAX_ROUNDED_INPUTS,
+    ModelCache,
+    ModelCallError,
+    assumed_args,
+    box_points,
+    build_args,
+    centre,
+    corners,
+    grid_steps,
+)
+from reference.catalog import Catalog
+from reference.compare import Context, Judgement, Verdict, exact, inside, judge, judge_equal
 from reference.diagnose import diagnose
 from reference.models import is_monotonic, resolve
-from reference.numbers import Printed, parse_number
-from reference.schema import Claim
+from reference.numbers import EXACT_ULPS, Printed, parse_number
+from reference.power import Outcome, catches, judge_misprints, measured
+from reference.schema import Assumption, Claim
 from reference.tables import constants, unit_factor
-from reference.validate import checked_catalog, parsed
+from reference.validate import checked_catalog, claim_refs, parsed
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -69,13 +81,18 @@ class EvaluatedClaim:
     pick: str
     model_error: float | None
     assumptions: dict[str, Any]
+    rounded_assumptions: list[str]
     precision_reason: str | None
     rel_tol: float | None
     sigfigs: int | None
+    rounding: str | None
+    exact: bool
+    monotonic: bool | None
     restates: str | None
     figure: str | None
     equation: str | None
     note: str | None
+    catches: list[str] | None
 
     @property
     def passed(self) -> bool:
@@ -92,12 +109,18 @@ class EvaluatedClaim:
 
 @dataclass(frozen=True)
 class Evaluation(Sequence[EvaluatedClaim]):
-    """The evaluated claims of a run, in catalog order."""
+    """The evaluated claims of a run, in catalog order; ``contexts`` holds each judged claim's
+    ``Context`` (what ``reference.power`` judges misprints in), ``centres`` the model's value
+    at the centre of each box of rounded inputs, and ``misprints`` each measured claim's
+    misprints as judged (design 3a)."""
 
     claims: tuple[EvaluatedClaim, ...]
     catalog: Catalog = field(repr=False)
     book: Book = field(repr=False)
     model_calls: int = 0
+    contexts: Mapping[str, Context] = field(default_factory=dict, repr=False)
+    centres: Mapping[str, Fraction] = field(default_factory=dict, repr=False)
+    misprints: Mapping[str, list[Outcome]] = field(default_factory=dict, repr=False)
 
     def __len__(self) -> int:
         return len(self.claims)
@@ -147,39 +170,117 @@ def _correct_string(printed: Printed, model: Fraction) -> str | None:
     return f"{Decimal(rounded.numerator) / Decimal(rounded.denominator):.{max(0, -exponent)}f}"
 
 
+@dataclass(frozen=True)
+class _Modelled:
+    """What the model said of a claim, in the printed unit: its value, the interval over the
+    box of rounded inputs (or why there is none), its declared error, and its value at the
+    box's centre."""
+
+    value: Any = None
+    interval: tuple[Fraction, Fraction] | None = None
+    interval_note: str | None = None
+    error: Fraction | None = None
+    centre: Fraction | None = None
+
+
 class _Evaluator:
     def __init__(self, catalog: Catalog) -> None:
         self.claims = catalog.by_id()
         self.files = catalog.file_of()
         self.cache = ModelCache()
         self.done: dict[str, EvaluatedClaim] = {}
-        self.model_values: dict[str, tuple[Any, list[Fraction] | None, str | None]] = {}
+        self.modelled: dict[str, _Modelled] = {}
+        self.contexts: dict[str, Context] = {}
+        self.exact_inputs: dict[str, bool] = {}
 
-    # -- values --------------------------------------------------------------------------
+    # -- inputs --------------------------------------------------------------------------
     def lookup(self, ident: str) -> tuple[Claim, Printed]:
         claim = self.claims[ident]
         return claim, parsed(claim)
 
-    def call_model(self, claim: Claim) -> tuple[Any, list[Fraction] | None, str | None, Any]:
-        """Model value (printed unit), input interval, why there is none, model error."""
-        assert claim.model is not None
-        args, inputs = build_args(claim.args, self.lookup)
-        args.update(claim.assumptions)
-        value, error = self._value_at(claim, args)
-        rounded = [i for i in inputs if i.rounded]
-        interval, note = None, None
-        if rounded:
-            if not is_monotonic(resolve(claim.model)):
-                note = f"{claim.model} declares it is not monotonic: no interval"
-            elif len(rounded) > MAX_ROUNDED_INPUTS:
-                note = f"{len(rounded)} rounded inputs: too many corners for an interval"
-            else:
-                values = [self._value_at(claim, corner)[0] for corner in corners(args, rounded)]
-                reals = [exact(v.real if isinstance(v, complex) else v) for v in values]
-                interval = [min(reals), max(reals)]
-        return value, interval, note, error
+    def root(self, claim: Claim) -> Claim:
+        """The claim a restatement restates (itself if it restates none)."""
+        while claim.restates is not None:
+            claim = self.claims[claim.restates]
+        return claim
 
-    def _value_at(self, claim: Claim, args: dict[str, Any]) -> tuple[Any, float | None]:
+    def is_rounded_input(self, ident: str) -> bool:
+        """Whether a referenced claim's printed value is a rounded input (design 3a)."""
+        return not self.is_exact_input(ident)
+
+    def is_exact_input(self, ident: str) -> bool:
+        """A given is exact unless ``rounded = true``; a constant is exact as printed; another
+        claim is exact when ``exact = true``, or when its model value equals its stated value,
+        with no input interval, no declared error, and only exact inputs of its own."""
+        if ident not in self.exact_inputs:
+            claim = self.claims[ident]
+            root = self.root(claim)
+            if root.kind == "given":
+                exact_input = not (claim.rounded or root.rounded)
+            elif root.kind == "constant" or claim.exact:
+                exact_input = True
+            else:
+                self.evaluate(ident)
+                exact_input = self._equals_its_model(claim) and all(
+                    self.is_exact_input(ref) for ref in self._arg_refs(root)
+                )
+                exact_input = exact_input and not any(
+                    isinstance(a, Assumption) and a.rounded for a in root.assumptions.values()
+                )
+            self.exact_inputs[ident] = exact_input
+        return self.exact_inputs[ident]
+
+    @staticmethod
+    def _arg_refs(claim: Claim) -> list[str]:
+        return [ref for value in claim.args.values() for ref in claim_refs(value)]
+
+    def _equals_its_model(self, claim: Claim) -> bool:
+        modelled = self.modelled.get(claim.id)
+        if modelled is None or modelled.value is None:
+            return False
+        if modelled.interval is not None or modelled.error:
+            return False
+        value = modelled.value
+        if isinstance(value, complex):
+            if value.imag != 0:
+                return False
+            value = value.real
+        stated = parsed(claim).value
+        if isinstance(value, int | Fraction):
+            return Fraction(value) == stated
+        return abs(exact(value) - stated) <= Fraction(EXACT_ULPS * math.ulp(float(value) or 1e-300))
+
+    # -- model calls -----------------------------------------------------------------------
+    def call_model(self, claim: Claim) -> _Modelled:
+        """The model's value in the printed unit, its input interval (or why there is none),
+        its declared error and its value at the box's centre."""
+        assert claim.model is not None
+        args, inputs = build_args(claim.args, self.lookup, self.is_rounded_input)
+        assumed, assumed_inputs = assumed_args(claim.assumptions)
+        args.update(assumed)
+        value, error = self._value_at(claim, args)
+        rounded = [i for i in [*inputs, *assumed_inputs] if i.rounded]
+        if not rounded:
+            return _Modelled(value, None, None, error)
+        monotonic = claim.monotonic
+        if monotonic is None:
+            monotonic = is_monotonic(resolve(claim.model))
+        if monotonic:
+            if len(rounded) > MAX_ROUNDED_INPUTS:
+                note = f"{len(rounded)} rounded inputs: too many corners for an interval"
+                return _Modelled(value, None, note, error)
+            points = corners(args, rounded)
+        else:
+            steps = grid_steps(len(rounded))
+            if steps is None:
+                note = f"{len(rounded)} rounded inputs of a model not monotonic: no interval"
+                return _Modelled(value, None, note, error)
+            points = box_points(args, rounded, steps)
+        reals = [_real(self._value_at(claim, point)[0]) for point in points]
+        middle = _real(self._value_at(claim, centre(args, rounded))[0])
+        return _Modelled(value, (min(reals), max(reals)), None, error, middle)
+
+    def _value_at(self, claim: Claim, args: dict[str, Any]) -> tuple[Any, Fraction | None]:
         """The model's picked value at ``args`` in the printed unit, and its declared error."""
         assert claim.model is not None
         raw = self.cache.picked(claim.id, claim.model, args, claim.pick)
@@ -187,7 +288,8 @@ class _Evaluator:
         if hasattr(raw, "value") and hasattr(raw, "error"):
             raw, error = raw.value, raw.error
         factor = unit_factor(claim.unit)
-        return self._convert(claim, raw, factor), None if error is None else float(error) / factor
+        converted = self._convert(claim, raw, factor)
+        return converted, None if error is None else exact(float(error) / factor)
 
     @staticmethod
     def _convert(claim: Claim, value: Any, factor: float) -> Any:
@@ -209,132 +311,128 @@ class _Evaluator:
             return value
         return value / factor
 
-    # -- verdicts ------------------------------------------------------------------------
-    def judge(
-        self, claim: Claim, printed: Printed, model: Any, interval: list[Fraction] | None
-    ) -> Judgement:
-        if isinstance(model, complex):
-            # A complex model value meets a real printed value: the real part is compared and
-            # the imaginary part must vanish within the same tolerance.
-            judgement = self._judge_real(claim, printed, exact(model.real), interval)
-            if judgement.verdict != "erratum" and abs(exact(model.imag)) > printed.tolerance:
-                return Judgement("erratum", None, judgement.tolerance)
-            return judgement
-        return self._judge_real(claim, printed, exact(model), interval)
-
+    # -- contexts --------------------------------------------------------------------------
     @staticmethod
-    def _judge_real(
-        claim: Claim, printed: Printed, model: Fraction, interval: list[Fraction] | None
-    ) -> Judgement:
-        if claim.relation == "=":
-            box = (interval[0], interval[1]) if interval else None
-            return judge_equal(printed, model, interval=box, exact_only=claim.kind == "count")
+    def context(claim: Claim, modelled: _Modelled, scale: Fraction = Fraction(1)) -> Context:
+        """The claim's judging context from what the model said (``scale`` converts a restated
+        claim's value to this claim's unit)."""
+        value = modelled.value
+        imag = Fraction(0)
+        if isinstance(value, complex):
+            imag = exact(value.imag) * scale
+            value = value.real
+        interval = modelled.interval
+        if interval is not None and scale != 1:
+            interval = tuple(sorted((interval[0] * scale, interval[1] * scale)))
         bounds = None
         if claim.bounds is not None:
             bounds = (parse_number(claim.bounds[0]), parse_number(claim.bounds[1]))
-        return judge_relation(claim.relation, printed, model, rel_tol=claim.rel_tol, bounds=bounds)
+        return Context(
+            model=exact(value) * scale,
+            relation=claim.relation,
+            imag=imag,
+            interval=interval,
+            error=None if modelled.error is None else modelled.error * abs(scale),
+            exact_only=claim.kind == "count",
+            truncation=claim.rounding == "truncation",
+            rel_tol=None if claim.rel_tol is None else Fraction(claim.rel_tol),
+            bounds=bounds,
+        )
 
+    def constant_context(self, claim: Claim, printed: Printed, key: str) -> Context:
+        """A constant claim's context: today's value within h plus twice its uncertainty; an
+        exact whole-number datum printed whole (a date, 5,280 feet) admits no rounding."""
+        const = constants()[key]
+        factor = unit_factor(claim.unit)
+        value = exact(const.value / factor)
+        whole = const.uncertainty == 0 and value.denominator == 1
+        return Context(
+            model=value,
+            relation=claim.relation,
+            extra=exact(2 * const.uncertainty / factor),
+            exact_only=whole and printed.value.denominator == 1 and printed.quantum == 1,
+            truncation=claim.rounding == "truncation",
+            rel_tol=None if claim.rel_tol is None else Fraction(claim.rel_tol),
+        )
+
+    @staticmethod
+    def dated_match(claim: Claim, printed: Printed, key: str) -> str | None:
+        """The older edition of a constant the printed value matches, if today's does not."""
+        const = constants()[key]
+        factor = unit_factor(claim.unit)
+        matching = [
+            old
+            for old in const.editions[1:]
+            if judge_equal(
+                printed,
+                Context(exact(old.value / factor), extra=exact(2 * old.uncertainty / factor)),
+            ).verdict
+            == "verified"
+        ]
+        if not matching:
+            return None
+        # the edition the book most likely used: the closest value among those matching
+        best = min(matching, key=lambda e: abs(exact(e.value / factor) - printed.value))
+        return f"dated: matches {best.edition} ({best.value:g} {const.unit})"
+
+    # -- verdicts ------------------------------------------------------------------------
     def evaluate(self, ident: str) -> EvaluatedClaim:
         if ident in self.done:
             return self.done[ident]
         claim = self.claims[ident]
-        f = self.files[ident]
+        root = self.root(claim)
         printed = parsed(claim)
-        model_value: Any = None
-        interval: list[Fraction] | None = None
-        interval_note: str | None = None
-        model_error: Any = None
+        modelled = _Modelled()
         auto: str | None = None
-        if claim.kind == "given" or (
-            claim.restates and self.claims[claim.restates].kind == "given"
-        ):
+        ctx: Context | None = None
+        if root.kind == "given":
             judgement = Judgement("given", None, None)
-        elif claim.kind == "constant" or (
-            claim.restates and self.claims[claim.restates].kind == "constant"
-        ):
-            key = claim.constant or self.claims[claim.restates or ""].constant
-            assert key is not None
-            judgement, model_value, auto = self.judge_constant(claim, printed, key)
+        elif root.kind == "constant":
+            assert root.constant is not None
+            ctx = self.constant_context(claim, printed, root.constant)
+            modelled = _Modelled(float(ctx.model))
+            judgement = judge(printed, ctx)
+            if judgement.verdict == "erratum":
+                auto = self.dated_match(claim, printed, root.constant)
         elif claim.restates:
-            source = self.evaluate(claim.restates)
-            model_value, interval, interval_note = self.model_values[claim.restates]
+            self.evaluate(claim.restates)
+            source = self.modelled[claim.restates]
             # a restatement may print the quantity in another physical unit (7 mile/s for
             # 11.3 km/s): convert the restated model value
-            scale = unit_factor(self.claims[claim.restates].unit) / unit_factor(claim.unit)
-            if scale != 1:
-                model_value = model_value * scale
-                interval = None if interval is None else [v * Fraction(scale) for v in interval]
-            interval_note = source.interval_note
-            judgement = self.judge(claim, printed, model_value, interval)
+            scale = exact(unit_factor(self.claims[claim.restates].unit) / unit_factor(claim.unit))
+            if source.value is None:
+                judgement = Judgement("unmodeled", None, None)
+            else:
+                ctx = self.context(claim, source, scale)
+                value = source.value * float(scale) if scale != 1 else source.value
+                modelled = dataclasses.replace(source, value=value, interval=ctx.interval)
+                judgement = judge(printed, ctx)
         elif claim.model is None:
             judgement = Judgement("unmodeled", None, None)
         else:
-            model_value, interval, interval_note, model_error = self.call_model(claim)
-            judgement = self.judge(claim, printed, model_value, interval)
-            if model_error:
-                err = Fraction(model_error)
-                shifted = [
-                    self.judge(claim, printed, exact(model_value) + s * err, interval).verdict
-                    for s in (-1, 1)
-                ]
-                if any(v != judgement.verdict for v in shifted):
-                    judgement = Judgement("indeterminate", None, judgement.tolerance)
-        self.model_values[ident] = (model_value, interval, interval_note)
-        self.done[ident] = result = self.record(
-            f, claim, printed, judgement, model_value, interval, interval_note, model_error, auto
-        )
+            modelled = self.call_model(claim)
+            ctx = self.context(claim, modelled)
+            judgement = judge(printed, ctx)
+        self.modelled[ident] = modelled
+        if ctx is not None:
+            self.contexts[ident] = ctx
+        self.done[ident] = result = self.record(claim, printed, judgement, modelled, auto)
         return result
-
-    def judge_constant(
-        self, claim: Claim, printed: Printed, key: str
-    ) -> tuple[Judgement, float, str | None]:
-        const = constants()[key]
-        factor = unit_factor(claim.unit)
-        editions = const.editions
-        current = editions[0]
-        extra = Fraction(2 * current.uncertainty / factor)
-        value = current.value / factor
-        if claim.relation != "=":
-            return self._judge_real(claim, printed, exact(value), None), value, None
-        # an exact whole-number datum printed whole (a date, 5,280 feet) admits no rounding
-        whole = current.uncertainty == 0 and float(value).is_integer()
-        exact_only = whole and printed.value.denominator == 1 and printed.quantum == 1
-        judgement = judge_equal(printed, exact(value), extra=extra, exact_only=exact_only)
-        auto = None
-        if judgement.verdict == "erratum":
-            matching = [
-                old
-                for old in editions[1:]
-                if judge_equal(
-                    printed,
-                    exact(old.value / factor),
-                    extra=Fraction(2 * old.uncertainty / factor),
-                ).verdict
-                in ("verified", "rounding")
-            ]
-            if matching:
-                # the edition the book most likely used: the closest value among those matching
-                best = min(matching, key=lambda e: abs(exact(e.value / factor) - printed.value))
-                auto = f"dated: matches {best.edition} ({best.value:g} {const.unit})"
-        return judgement, value, auto
 
     def record(
         self,
-        f: ChapterFile,
         claim: Claim,
         printed: Printed,
         judgement: Judgement,
-        model_value: Any,
-        interval: list[Fraction] | None,
-        interval_note: str | None,
-        model_error: Any,
+        modelled: _Modelled,
         auto: str | None,
     ) -> EvaluatedClaim:
+        model_value = modelled.value
+        interval = modelled.interval
         correct_agrees = None
         if claim.correct is not None and model_value is not None:
             correct = parse_number(claim.correct, sigfigs=claim.sigfigs)
-            m = exact(model_value.real if isinstance(model_value, complex) else model_value)
-            correct_agrees = abs(m - correct.value) <= correct.tolerance * (1 + Fraction(1, 10**9))
+            correct_agrees = inside(abs(_real(model_value) - correct.value), correct.tolerance)
         diagnosis = None
         if judgement.verdict == "erratum" or claim.expect == "erratum":
             if auto is None and model_value is not None and not isinstance(model_value, complex):
@@ -349,6 +447,8 @@ class _Evaluator:
             }
         tol = judgement.tolerance
         wide = bool(interval and tol and (interval[1] - interval[0]) > WIDE_INTERVAL * tol)
+        f = self.files[claim.id]
+        dumped = claim.model_dump(mode="json")
         return EvaluatedClaim(
             id=claim.id,
             chapter=f.meta.chapter,
@@ -363,7 +463,7 @@ class _Evaluator:
             value=_as_json_number(printed.value),
             model_value=_as_json_number(model_value),
             interval=[float(interval[0]), float(interval[1])] if interval else None,
-            interval_note=interval_note,
+            interval_note=modelled.interval_note,
             interval_wide=wide,
             tolerance=None if tol is None else float(tol),
             rounding_reason=judgement.reason,
@@ -377,18 +477,32 @@ class _Evaluator:
             diagnosis=diagnosis,
             quantity=claim.quantity,
             model=claim.model,
-            args=claim.model_dump(mode="json")["args"],
+            args=dumped["args"],
             pick=claim.pick,
-            model_error=None if model_error is None else float(model_error),
-            assumptions=dict(claim.assumptions),
+            model_error=None if modelled.error is None else float(modelled.error),
+            assumptions={
+                k: v["value"] if isinstance(v, dict) else v
+                for k, v in dumped["assumptions"].items()
+            },
+            rounded_assumptions=sorted(
+                k for k, v in claim.assumptions.items() if isinstance(v, Assumption) and v.rounded
+            ),
             precision_reason=claim.precision_reason,
             rel_tol=claim.rel_tol,
             sigfigs=claim.sigfigs,
+            rounding=claim.rounding,
+            exact=claim.exact,
+            monotonic=claim.monotonic,
             restates=claim.restates,
             figure=claim.figure,
             equation=claim.equation,
             note=claim.note,
+            catches=None,
         )
+
+
+def _real(value: Any) -> Fraction:
+    return exact(value.real if isinstance(value, complex) else value)
 
 
 def evaluate_catalog(
@@ -399,11 +513,27 @@ def evaluate_catalog(
     wanted = set(chapters) if chapters is not None else None
     selected = [c.id for f, c in catalog.claims() if wanted is None or f.meta.chapter in wanted]
     out = []
+    outcomes: dict[str, list[Outcome]] = {}
     for i, ident in enumerate(selected, start=1):
-        out.append(evaluator.evaluate(ident))
+        evaluated = evaluator.evaluate(ident)
+        claim = evaluator.claims[ident]
+        ctx = evaluator.contexts.get(ident)
+        if ctx is not None and measured(claim):
+            outcomes[ident] = judge_misprints(claim, ctx)
+            evaluated = dataclasses.replace(evaluated, catches=catches(outcomes[ident]))
+        out.append(evaluated)
         if progress and (i % 200 == 0 or i == len(selected)):
             print(f"bangcheck: evaluated {i}/{len(selected)} claims", file=sys.stderr)
-    return Evaluation(tuple(out), catalog, book, evaluator.cache.calls)
+    centres = {ident: m.centre for ident, m in evaluator.modelled.items() if m.centre is not None}
+    return Evaluation(
+        tuple(out),
+        catalog,
+        book,
+        evaluator.cache.calls,
+        dict(evaluator.contexts),
+        centres,
+        outcomes,
+    )
 
 
 def evaluate(

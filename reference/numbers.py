@@ -98,7 +98,7 @@ def _inexact(value: Fraction, quantum: Fraction) -> tuple[Fraction, Fraction, bo
     return value, quantum / 2, False, quantum
 
 
-def parse_number(text: str, *, sigfigs: int | None = None) -> Printed:
+def parse_number(text: str, *, sigfigs: int | None = None, exact: bool = False) -> Printed:
     """Read a printed token or a ``means`` string.
 
     Accepts decimals with thousands commas, signs (``-``, ``−``, ``–``, ``+``, ``±``), ``%`` and
@@ -106,7 +106,9 @@ def parse_number(text: str, *, sigfigs: int | None = None) -> Printed:
     ("2·10-27", "(2/3)·10-27", "10-25"), powers written with a caret ("60^2", "10^-25"; exact
     when the base is an integer, else the base's half-width propagated), fractions "p/q",
     multiples and fractions of pi ("2π/3", "180/π") and roots ("√3/2", "1/√2").
-    ``sigfigs`` counts fewer significant digits than printed. Raises ``NumberFormatError``.
+    ``sigfigs`` counts fewer significant digits than printed; ``exact`` reads a printed integer
+    as an exact amount (the "1" of "1 radian"), not as one rounded to the unit. Raises
+    ``NumberFormatError``.
     """
     raw = text
     s = normalize(text).strip()
@@ -121,13 +123,17 @@ def parse_number(text: str, *, sigfigs: int | None = None) -> Printed:
         mark, s = s[-1], s[:-1]
     if not s:
         raise NumberFormatError(f"not a number: {raw!r}")
-    value, half, exact, quantum = _body(s, raw, sigfigs)
-    if sigfigs is not None and exact:
+    value, half, is_exact, quantum = _body(s, raw, sigfigs)
+    if sigfigs is not None and is_exact:
         raise NumberFormatError(f"sigfigs cannot apply to the exact form {raw!r}")
+    if exact:
+        if sigfigs is not None or quantum != 1:
+            raise NumberFormatError(f"only a printed integer can be exact: {raw!r}")
+        half, is_exact, quantum = Fraction(0), True, None
     if negative:
         value = -value
     irrational = bool(_RE_PI.fullmatch(s) or _RE_ROOT.fullmatch(s))
-    return Printed(raw, value, half, exact, absolute, mark, quantum, irrational)
+    return Printed(raw, value, half, is_exact, absolute, mark, quantum, irrational)
 
 
 def _body(

@@ -23,6 +23,7 @@ Garble = Literal[
 DiagnosisKind = Literal[
     "decimal-shift",
     "digit-swap",
+    "last-digit",
     "dropped-digit",
     "extra-digit",
     "sign",
@@ -34,7 +35,14 @@ DiagnosisKind = Literal[
     "dated",
     "other",
 ]
-HAND_REASONS = ("notation", "axis-tick", "symbolic-matrix", "restates", "not-a-claim")
+HAND_REASONS = (
+    "notation",
+    "axis-tick",
+    "symbolic-matrix",
+    "restates",
+    "part-of",
+    "not-a-claim",
+)
 
 Text = Annotated[str, StringConstraints(min_length=1)]
 Line = Annotated[int, Field(ge=1)]
@@ -84,6 +92,15 @@ class Diagnosis(_Strict):
     note: Text
 
 
+class Assumption(_Strict):
+    """An input the book does not state, as a table: its value (a string keeps the digits that
+    give a rounded value its precision), whether it is rounded, and why it is what it is."""
+
+    value: int | float | str
+    rounded: bool = False
+    reason: Text
+
+
 class Claim(_Strict):
     """One numeric claim of the book."""
 
@@ -110,7 +127,10 @@ class Claim(_Strict):
     sigfigs: Annotated[int, Field(ge=1)] | None = None
     precision_reason: Text | None = None
     restates: Text | None = None
-    assumptions: dict[str, int | float | str] = Field(default_factory=dict)
+    assumptions: dict[str, int | float | str | Assumption] = Field(default_factory=dict)
+    rounding: Literal["truncation"] | None = None
+    exact: bool = False
+    monotonic: bool | None = None
     correct: Text | None = None
     diagnosis: Diagnosis | None = None
     figure: Text | None = None
@@ -120,13 +140,20 @@ class Claim(_Strict):
 
 
 class Excluded(_Strict):
-    """A hand exclusion: one token (line, token, occurrence) or a symbolic range of lines."""
+    """A hand exclusion: one token (line, token, occurrence) or a symbolic range of lines.
+
+    ``restates ID`` and ``part-of ID`` exclusions may say the unit the token is printed in and,
+    with ``means``, the number it stands for (a garbled token, or for ``part-of`` the whole
+    number the piece belongs to, as printed: "π/6"); ``checks/`` tests that they agree with the
+    claim they name."""
 
     reason: Text
     line: Line | None = None
     token: Text | None = None
     occurrence: Annotated[int, Field(ge=1)] | None = None
     lines: Annotated[list[Line], Field(min_length=2, max_length=2)] | None = None
+    unit: Text | None = None
+    means: Text | None = None
 
 
 class Slip(_Strict):

@@ -18,7 +18,15 @@ from reference.catalog import Catalog, ChapterFile, read_catalog
 from reference.locate import find, line_tokens, matches, pick_occurrence
 from reference.models import check_signature, pick_steps, resolve
 from reference.numbers import NumberFormatError, Printed, parse_number, significant_digits
-from reference.schema import HAND_REASONS, CatalogError, Claim, ClaimRef, Excluded, Problem
+from reference.schema import (
+    HAND_REASONS,
+    Assumption,
+    CatalogError,
+    Claim,
+    ClaimRef,
+    Excluded,
+    Problem,
+)
 from reference.tables import NO_CONVERSION, constants, units
 from reference.tokens import normalize
 
@@ -57,7 +65,7 @@ def references(claim: Claim) -> list[str]:
 
 def parsed(claim: Claim) -> Printed:
     """The value a claim states: ``means`` where given, else ``printed``, with its sigfigs."""
-    return parse_number(claim.means or claim.printed, sigfigs=claim.sigfigs)
+    return parse_number(claim.means or claim.printed, sigfigs=claim.sigfigs, exact=claim.exact)
 
 
 def superscript_ok(printed: str, means: str) -> bool:
@@ -173,6 +181,23 @@ class _Checker:
             add("unit", 'a printed degree mark needs unit = "deg"')
         if c.assumptions and c.precision_reason is None:
             add("precision_reason", "assumptions need a precision_reason")
+        for name, assumed in c.assumptions.items():
+            if isinstance(assumed, Assumption) and isinstance(assumed.value, str):
+                try:
+                    parse_number(assumed.value)
+                except NumberFormatError as err:
+                    add(f"assumptions.{name}.value", str(err))
+        if c.rounding is not None and c.precision_reason is None:
+            add("precision_reason", "a declared truncation cites the text's evidence")
+        if c.exact:
+            if c.precision_reason is None:
+                add("precision_reason", "exact = true says why the integer is an exact amount")
+            if c.kind == "given":
+                add("exact", "a given is exact as printed already (rounded = true says not)")
+            try:
+                parsed(c)
+            except NumberFormatError as err:
+                add("exact", str(err))
 
     def check_kind(self, f: ChapterFile, c: Claim) -> None:
         add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
@@ -203,6 +228,8 @@ class _Checker:
                 add("diagnosis", "only an erratum has a diagnosis")
         if c.restates is not None and (c.model or c.args):
             add("restates", "a restatement is not modelled again: no model or args")
+        if c.monotonic is not None and c.model is None:
+            add("monotonic", "monotonic speaks of a model: the claim has none")
 
     def check_correct(self, f: ChapterFile, c: Claim) -> None:
         assert c.correct is not None
@@ -299,10 +326,19 @@ class _Checker:
         word = e.reason.split(":")[0].split()[0] if e.reason.strip() else ""
         if word not in HAND_REASONS:
             add("reason", f"must start with one of {HAND_REASONS}")
-        if word == "restates":
+        if word in ("restates", "part-of"):
             target = e.reason.split(maxsplit=1)[1:] or [""]
             if target[0] not in self.catalog.by_id() and target[0] not in self.catalog.rejected:
-                add("reason", f"restates an unknown claim {target[0]!r}")
+                add("reason", f"{word} an unknown claim {target[0]!r}")
+        elif e.unit is not None or e.means is not None:
+            add("unit" if e.unit is not None else "means", "only restates and part-of take it")
+        if e.unit is not None and e.unit not in NO_CONVERSION and e.unit not in units():
+            add("unit", f"unknown unit {e.unit!r} (see reference/units.toml)")
+        if e.means is not None:
+            try:
+                parse_number(e.means)
+            except NumberFormatError as err:
+                add("means", str(err))
         if word == "not-a-claim" and not e.reason.partition(":")[2].strip():
             add("reason", "not-a-claim needs its words: 'not-a-claim: why'")
         if e.lines is not None:
@@ -348,6 +384,14 @@ class _Checker:
                     self.add(f, c.id, field, f"refers to an unknown claim {ref!r}")
                 elif ref == c.id:
                     self.add(f, c.id, "args", "a claim cannot refer to itself")
+                elif ref in by_id and ref != c.restates and by_id[ref].relation != "=":
+                    self.add(
+                        f,
+                        c.id,
+                        "args",
+                        f"refers to {ref}, a bound ({by_id[ref].relation!r}), not a value: model "
+                        "the bounded quantity from its own inputs (design 3a)",
+                    )
             restated = by_id.get(c.restates or "")
             if restated is not None and restated.unit != c.unit:
                 dimensionless = sorted({c.unit, restated.unit} & set(NO_CONVERSION))
