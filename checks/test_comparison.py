@@ -7,14 +7,21 @@ from fractions import Fraction
 
 import pytest
 
-from reference.compare import exact, in_order_of, judge_equal, judge_relation
+from reference.compare import Context, exact, in_order_of, judge
 from reference.diagnose import diagnose
 from reference.numbers import NumberFormatError, parse_number
 
 
 def verdict(printed: str, model: float, **kw: object) -> tuple[str, str | None]:
-    j = judge_equal(parse_number(printed), exact(model), **kw)  # type: ignore[arg-type]
+    """The verdict of ``printed`` against ``model`` in a context of ``kw`` (Context fields)."""
+    j = judge(parse_number(printed), Context(exact(model), **kw))  # type: ignore[arg-type]
     return j.verdict, j.reason
+
+
+def relation(rel: str, printed: str, model: float, **kw: object) -> str:
+    """The verdict of the relation ``rel`` (model REL printed)."""
+    ctx = Context(exact(model), relation=rel, **kw)  # type: ignore[arg-type]
+    return judge(parse_number(printed), ctx).verdict
 
 
 # -- printed values: value and half-width from the digits ---------------------------------------
@@ -85,8 +92,20 @@ def test_pi_and_root_forms_are_exact(printed: str, value: float) -> None:
 def test_sigfigs_widen_the_half_width() -> None:
     p = parse_number("9,000,000,000", sigfigs=1)
     assert p.half_width == 5 * 10**8
-    assert judge_equal(p, exact(8.98755e9)).verdict == "verified"
-    assert judge_equal(parse_number("9,000,000,000"), exact(8.98755e9)).verdict == "erratum"
+    assert judge(p, Context(exact(8.98755e9))).verdict == "verified"
+    assert judge(parse_number("9,000,000,000"), Context(exact(8.98755e9))).verdict == "erratum"
+
+
+def test_an_exact_integer_has_no_half_unit_of_slack() -> None:
+    """ "-1 radian" names exactly one radian (line 1393): read as exact, -0.5708 rad is an
+    erratum, as the same angle printed -57.3° is; read as a rounded integer it would pass."""
+    model = 1 - math.pi / 2
+    assert judge(parse_number("-1", exact=True), Context(exact(model))).verdict == "erratum"
+    assert judge(parse_number("-1"), Context(exact(model))).verdict == "verified"
+    assert judge(parse_number("-57.3°"), Context(exact(math.degrees(model)))).verdict == ("erratum")
+    assert judge(parse_number("-1", exact=True), Context(exact(-1.0))).verdict == "verified"
+    with pytest.raises(NumberFormatError, match="only a printed integer"):
+        parse_number("-1.0", exact=True)
 
 
 @pytest.mark.parametrize("bad", ["", "-", "abc", "1/0", "3..2", "E6"])
@@ -109,18 +128,28 @@ def test_float_just_below_a_half_still_rounds() -> None:
 
 def test_trailing_zeros_count() -> None:
     assert verdict("0.0100", 0.01002936) == ("verified", None)
-    assert verdict("0.0100", 0.01009) == ("rounding", "truncation")
-    assert verdict("0.0100", 0.00991) == ("rounding", "other-way")
+    assert verdict("0.0100", 0.01009) == ("erratum", None)
+    assert verdict("0.0100", 0.00991) == ("erratum", None)
     assert verdict("0.010", 0.01009) == ("verified", None)
 
 
-def test_truncation_and_other_way_rounding() -> None:
-    assert verdict("2.71805", 1 + 1 + 1 / 2 + 1 / 6 + 1 / 24 + 1 / 120 + 1 / 720) == (
-        "rounding",
-        "truncation",
-    )
-    assert verdict("2.71806", 2.7180544) == ("rounding", "other-way")
-    assert verdict("2.71807", 2.7180544) == ("erratum", None)
+def test_against_an_exact_model_a_value_one_unit_off_is_an_erratum() -> None:
+    """No rounding "the other way" (design 3a): a model sitting exactly on "250" (line 1943)
+    rejects 251, and 0.5 past h is as wrong as 5 units past it."""
+    assert verdict("250", 250) == ("verified", None)
+    assert verdict("251", 250) == ("erratum", None)
+    assert verdict("249", 250) == ("erratum", None)
+    assert verdict("2.71806", 2.7180544) == ("erratum", None)
+
+
+def test_a_declared_truncation_is_admitted_and_an_undeclared_one_is_not() -> None:
+    e6 = 1 + 1 + 1 / 2 + 1 / 6 + 1 / 24 + 1 / 120 + 1 / 720  # 2.7180555...: (10.6)
+    assert verdict("2.71805", e6) == ("erratum", None)
+    assert verdict("2.71805", e6, truncation=True) == ("rounding", "truncation")
+    assert verdict("2.71806", e6, truncation=True) == ("verified", None)
+    assert verdict("2.71804", e6, truncation=True) == ("erratum", None)  # cut, not cut again
+    assert verdict("-0.62", -0.6267, truncation=True) == ("rounding", "truncation")
+    assert verdict("-0.63", -0.6201, truncation=True) == ("erratum", None)  # away from zero
 
 
 def test_printed_fraction_is_exact() -> None:
@@ -142,16 +171,19 @@ def test_input_interval_gives_rounding() -> None:
     assert verdict("3.62", 3.65, interval=box) == ("rounding", "input-rounding")
     assert verdict("3.62", 3.65) == ("erratum", None)
     assert verdict("3.80", 3.65, interval=box) == ("erratum", None)
+    assert verdict("3.73", 3.65, interval=box) == ("rounding", "input-rounding")  # widened by h
+    assert verdict("3.74", 3.65, interval=box) == ("erratum", None)
+
+
+def test_a_verdict_that_changes_within_the_model_error_is_indeterminate() -> None:
+    assert verdict("3.62", 3.6249, error=exact(1e-6)) == ("verified", None)
+    assert verdict("3.62", 3.6249, error=exact(1e-3)) == ("indeterminate", None)
 
 
 def test_constant_uncertainty_widens_h() -> None:
     two_u = Fraction(2 * 1.5e-15)
-    assert judge_equal(parse_number("6.674E-11"), exact(6.6743e-11), extra=two_u).verdict == (
-        "verified"
-    )
-    assert judge_equal(parse_number("6.672E-11"), exact(6.6743e-11), extra=two_u).verdict == (
-        "erratum"
-    )
+    assert verdict("6.674E-11", 6.6743e-11, extra=two_u) == ("verified", None)
+    assert verdict("6.672E-11", 6.6743e-11, extra=two_u) == ("erratum", None)
 
 
 def test_count_is_exact() -> None:
@@ -163,7 +195,7 @@ def test_count_is_exact() -> None:
 
 
 @pytest.mark.parametrize(
-    ("relation", "printed", "model", "expected"),
+    ("rel", "printed", "model", "expected"),
     [
         ("<", "3.0", 2.9, "verified"),
         ("<", "3.0", 3.0, "erratum"),
@@ -173,21 +205,19 @@ def test_count_is_exact() -> None:
         (">=", "3", 2, "erratum"),
     ],
 )
-def test_order_relations(relation: str, printed: str, model: float, expected: str) -> None:
-    assert judge_relation(relation, parse_number(printed), exact(model)).verdict == expected
+def test_order_relations(rel: str, printed: str, model: float, expected: str) -> None:
+    assert relation(rel, printed, model) == expected
 
 
 def test_approximate_relation() -> None:
-    p = parse_number("5.8")
-    assert judge_relation("~", p, exact(5.65), rel_tol=0.05).verdict == "verified"
-    assert judge_relation("~", p, exact(5.0), rel_tol=0.05).verdict == "erratum"
+    assert relation("~", "5.8", 5.65, rel_tol=Fraction(5, 100)) == "verified"
+    assert relation("~", "5.8", 5.0, rel_tol=Fraction(5, 100)) == "erratum"
 
 
 def test_between() -> None:
     bounds = (parse_number("4"), parse_number("5"))
-    p = parse_number("4")
-    assert judge_relation("between", p, exact(4.5), bounds=bounds).verdict == "verified"
-    assert judge_relation("between", p, exact(5.5), bounds=bounds).verdict == "erratum"
+    assert relation("between", "4", 4.5, bounds=bounds) == "verified"
+    assert relation("between", "4", 5.5, bounds=bounds) == "erratum"
 
 
 def test_order_of_magnitude() -> None:
@@ -218,7 +248,10 @@ def test_model_value_must_be_finite() -> None:
         ("1.81", "3.62", "factor"),
         ("11.37", "3.62", "factor"),
         ("5.03", "3.62", None),
-        ("4", "5", None),  # a small integer's digits do not pin a ratio of 1/sqrt(2) down
+        ("3.63", "3.62", "last-digit"),
+        ("0.478", "0.479", "last-digit"),
+        ("4", "5", "last-digit"),
+        ("4", "6", None),  # a small integer's digits do not pin a ratio of 1/sqrt(2) down
         ("-7.24", "3.62", None),  # a factor with a sign flip is not diagnosed as a factor
     ],
 )

@@ -1,6 +1,6 @@
-"""The evaluator's paths that the catalog may not exercise yet: a model's declared numerical
-error (``indeterminate``), a model declared not monotonic (no input interval), and a constant
-that matches only an older edition (``dated``)."""
+"""The evaluator's paths on small catalogs of their own: a model's declared numerical error
+(``indeterminate``), intervals (corners, or a grid for a model not monotonic), exact inputs
+(design 3a), rounded assumptions, and a constant that matches only an older edition."""
 
 from __future__ import annotations
 
@@ -50,26 +50,120 @@ def test_a_small_model_error_keeps_the_verdict(book: Book, monkeypatch: pytest.M
     assert run(book, c)["ch08.x"].verdict == "verified"
 
 
-def test_a_model_declared_not_monotonic_gets_no_interval(
+def _peak(v: float) -> float:
+    return 4 - (v - 2) ** 2  # a maximum at v = 2, the nominal input below
+
+
+def _peak_claims(**extra: Any) -> tuple[Claim, Claim]:
+    given = claim(id="ch08.v", printed="2.0", kind="given", expect="given", rounded=True)
+    c = claim(
+        id="ch08.top",
+        printed="4.00",
+        kind="derived",
+        expect="verified",
+        model="towers.x",
+        args={"v": {"claim": "ch08.v"}},
+        **extra,
+    )
+    return given, c
+
+
+def test_a_model_not_monotonic_gets_its_interval_from_a_grid(
     book: Book, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    def count(v: float) -> int:
-        return round(10 * v)
+    """At an extremum the corners alone give an interval without the nominal value (the three
+    intervals the integrity test caught); declared not monotonic, per function or per claim,
+    the interval comes from corners, nominal point and grid, and contains it."""
+    fake_model(monkeypatch, _peak)
+    corners_only = run(book, *_peak_claims())["ch08.top"]
+    assert corners_only.interval == pytest.approx([3.9975, 3.9975])
+    per_claim = run(book, *_peak_claims(monotonic=False))["ch08.top"]
+    assert per_claim.interval == pytest.approx([3.9975, 4.0])
+    declared = _peak
+    declared.monotonic = False  # type: ignore[attr-defined]
+    try:
+        per_function = run(book, *_peak_claims())["ch08.top"]
+    finally:
+        del declared.monotonic  # type: ignore[attr-defined]
+    assert per_function.interval == per_claim.interval
 
-    count.monotonic = False  # type: ignore[attr-defined]
-    fake_model(monkeypatch, count)
-    given = claim(id="ch08.v", printed="2.1", kind="given", expect="given", rounded=True)
+
+def test_a_model_declared_not_monotonic_over_too_many_inputs_says_so(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    fake_model(monkeypatch, lambda **v: sum(v.values()))
+    givens = [
+        claim(id=f"ch08.v{i}", printed="2.1", kind="given", expect="given", rounded=True)
+        for i in range(7)
+    ]
     c = claim(
         id="ch08.n",
-        printed="21",
-        kind="count",
+        printed="14.7",
+        kind="derived",
         expect="verified",
         model="bangs.x",
-        args={"v": {"claim": "ch08.v"}},
+        args={f"v{i}": {"claim": f"ch08.v{i}"} for i in range(7)},
+        monotonic=False,
     )
-    result = run(book, given, c)["ch08.n"]
+    result = run(book, *givens, c)["ch08.n"]
     assert result.interval is None
     assert "not monotonic" in (result.interval_note or "")
+
+
+def test_a_derived_input_equal_to_its_model_is_exact(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """ΔP = 0 (line 1945) is exact when its model gives exactly 0: a claim using it gets no
+    interval from it, and a later claim that would print 2 is an erratum, not input-rounding."""
+    fake_model(monkeypatch, lambda v=None: 0 if v is None else 10 * v)
+    zero = claim(id="ch08.dp", printed="0", kind="derived", expect="verified", model="towers.x")
+    scaled = claim(
+        id="ch08.ten-dp",
+        printed="2",
+        kind="derived",
+        expect="erratum",
+        model="towers.x",
+        args={"v": {"claim": "ch08.dp"}},
+        correct="0",
+        diagnosis={"kind": "arithmetic", "note": "n"},
+    )
+    result = run(book, zero, scaled)["ch08.ten-dp"]
+    assert (result.interval, result.verdict) == (None, "erratum")
+
+
+def test_a_derived_input_off_its_model_is_rounded(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    fake_model(monkeypatch, lambda v=None: 0.04 if v is None else 10 * v)
+    small = claim(id="ch08.dp", printed="0", kind="derived", expect="verified", model="towers.x")
+    scaled = claim(
+        id="ch08.ten-dp",
+        printed="2",
+        kind="derived",
+        expect="rounding",
+        model="towers.x",
+        args={"v": {"claim": "ch08.dp"}},
+    )
+    result = run(book, small, scaled)["ch08.ten-dp"]
+    assert result.interval == pytest.approx([-5.0, 5.0])
+    assert (result.verdict, result.rounding_reason) == ("rounding", "input-rounding")
+
+
+def test_a_rounded_assumption_spans_the_box(book: Book, monkeypatch: pytest.MonkeyPatch) -> None:
+    fake_model(monkeypatch, lambda speed: speed / 0.44704)  # m/s to mph
+    c = claim(
+        id="ch08.mph",
+        printed="55",
+        kind="derived",
+        expect="rounding",
+        model="towers.x",
+        assumptions={"speed": {"value": "24", "rounded": True, "reason": "r"}},
+        precision_reason="the book's rounded 24 m/s",
+    )
+    result = run(book, c)["ch08.mph"]
+    assert result.interval == pytest.approx([23.5 / 0.44704, 24.5 / 0.44704])
+    assert (result.verdict, result.rounding_reason) == ("rounding", "input-rounding")
+    assert (result.assumptions, result.rounded_assumptions) == ({"speed": "24"}, ["speed"])
 
 
 def test_a_rounded_given_makes_an_interval(book: Book, monkeypatch: pytest.MonkeyPatch) -> None:

@@ -17,7 +17,14 @@ from typing import Any
 
 import pytest
 
-from reference.calls import ModelCache, ModelCallError, build_args, input_at, replace_input
+from reference.calls import (
+    ModelCache,
+    ModelCallError,
+    assumed_args,
+    build_args,
+    input_at,
+    replace_input,
+)
 from reference.catalog import Catalog
 from reference.compare import exact
 from reference.schema import Claim
@@ -52,9 +59,11 @@ class _Probe:
         """The inputs whose nudge moves the claim's value, all its inputs, and the value."""
         assert claim.model is not None
         args, inputs = build_args(
-            claim.args, lambda ident: (self.by_id[ident], parsed(self.by_id[ident]))
+            claim.args,
+            lambda ident: (self.by_id[ident], parsed(self.by_id[ident])),
+            rounded=lambda ident: False,
         )
-        args.update(claim.assumptions)
+        args.update(assumed_args(claim.assumptions)[0])
         base = _value(self.cache.picked(claim.id, claim.model, args, claim.pick))
         moved = set()
         for item in inputs:

@@ -35,7 +35,14 @@ from reference.compare import Context, Judgement, Verdict, exact, inside, judge,
 from reference.diagnose import diagnose
 from reference.models import is_monotonic, resolve
 from reference.numbers import EXACT_ULPS, Printed, parse_number
-from reference.power import Outcome, catches, judge_misprints, measured
+from reference.power import (
+    Outcome,
+    PowerReport,
+    catches,
+    judge_misprints,
+    measured,
+    power_report,
+)
 from reference.schema import Assumption, Claim
 from reference.tables import constants, unit_factor
 from reference.validate import checked_catalog, claim_refs, parsed
@@ -142,6 +149,15 @@ class Evaluation(Sequence[EvaluatedClaim]):
 
     def verdict_counts(self) -> Counter[str]:
         return Counter(c.verdict for c in self.claims)
+
+    def power(self) -> PowerReport:
+        """The detection power of the evaluated claims (design 3a), from the misprints judged
+        during the evaluation."""
+        return power_report(
+            (c.id, c.chapter, c.line, c.means or c.printed, self.misprints[c.id])
+            for c in self.claims
+            if c.id in self.misprints
+        )
 
     def to_frame(self) -> pd.DataFrame:
         """The claims as a pandas DataFrame, one row per claim (pandas is imported only here)."""

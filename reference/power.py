@@ -418,9 +418,17 @@ def power_report(
         for o in outcomes:
             if not o.caught:
                 misses.append(
-                    Miss(ident, chapter, line, o.misprint.cls, stated, o.misprint.text,
-                         o.verdict, o.reason)
-                )  # fmt: skip
+                    Miss(
+                        ident,
+                        chapter,
+                        line,
+                        o.misprint.cls,
+                        stated,
+                        o.misprint.text,
+                        o.verdict,
+                        o.reason,
+                    )
+                )
     all_rates = _rates(everything, targets=True)
     return PowerReport(
         classes=tuple(all_rates.values()),

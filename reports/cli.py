@@ -19,6 +19,7 @@ from reference.calls import ModelCallError
 from reference.catalog import CatalogDirectoryError, catalog_paths
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
+from reference.power import ClassRate, PowerReport
 from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
@@ -61,6 +62,11 @@ def _parser() -> argparse.ArgumentParser:
     scanner = sub.add_parser("scan", parents=[common], help="every number token's status")
     scanner.add_argument("--json", action="store_true", help="one JSON document")
     scanner.add_argument("--missing", action="store_true", help="list every missing token")
+
+    power = sub.add_parser(
+        "power", parents=[common], help="detection power: would a misprint have been caught?"
+    )
+    power.add_argument("--json", action="store_true", help="one JSON document")
 
     report = sub.add_parser("report", parents=[common], help="the errata report (HTML, CSV, JSON)")
     report.add_argument(
@@ -205,6 +211,52 @@ def _scan(args: argparse.Namespace) -> int:
     return EXIT_FINDINGS if result.missing or result.conflicts else EXIT_OK
 
 
+def _rate_row(name: str, rate: ClassRate) -> str:
+    shown = "-" if rate.rate is None else f"{rate.rate:.4f}"
+    target = "" if rate.target is None else f"{rate.target:>7}"
+    return f"  {name:<16} {rate.misprints:>9} {rate.caught:>7} {shown:>7} {target}"
+
+
+def _print_power(report: PowerReport, whole_book: bool) -> None:
+    header = f"  {'':<16} {'misprints':>9} {'caught':>7} {'rate':>7}"
+    print(f"detection power over {report.claims} claims (relation '=', expected verified)")
+    print(f"\nper class:\n{header} {'target':>7}")
+    for rate in report.classes:
+        print(_rate_row(rate.cls, rate))
+    for title, groups in (("number form", report.forms), ("chapter", report.chapters)):
+        print(f"\nper {title}:")
+        for key, rates in groups.items():
+            print(f"  {key}:")
+            for rate in rates.values():
+                print(_rate_row("  " + rate.cls, rate))
+    reasons = Counter(m.reason or "(no reason)" for m in report.misses)
+    print(
+        "\nmisses by reason: " + (", ".join(f"{r} {n}" for r, n in reasons.most_common()) or "none")
+    )
+    for miss in report.unexplained:
+        print(
+            f"  unexplained: {miss.id} (line {miss.line}) {miss.cls}: {miss.printed} -> "
+            f"{miss.misprint} is {miss.verdict}"
+        )
+    if whole_book:
+        for failure in report.failures():
+            print(f"target missed: {failure}")
+
+
+def _power(args: argparse.Namespace) -> int:
+    book = load_book(book_path(args.book))
+    catalog = checked_catalog(book, args.catalog)
+    evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
+    report = evaluation.power()
+    whole_book = args.chapter is None
+    if args.json:
+        print(json.dumps(report.to_json(), ensure_ascii=False))
+    else:
+        _print_power(report, whole_book)
+    failed = bool(report.unexplained) or (whole_book and bool(report.failures()))
+    return EXIT_FINDINGS if failed else EXIT_OK
+
+
 def _report(args: argparse.Namespace) -> int:
     from reports.page import build_report
 
@@ -260,7 +312,8 @@ def _run(argv: Sequence[str] | None) -> int:
         except CatalogDirectoryError as err:
             parser.error(str(err))
     try:
-        return {"claims": _claims, "scan": _scan, "report": _report}[args.command](args)
+        commands = {"claims": _claims, "scan": _scan, "power": _power, "report": _report}
+        return commands[args.command](args)
     except (BookError, CatalogDirectoryError, OutputError, PropertiesError) as err:
         print(f"bangcheck: error: {err}", file=sys.stderr)
     except CatalogError as err:
