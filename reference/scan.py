@@ -17,6 +17,7 @@ from reference.book import Book
 from reference.catalog import Catalog
 from reference.exclusions import excluded_by, rule_spans
 from reference.locate import find, line_tokens
+from reference.restatements import restatement_conflicts
 from reference.tokens import Token, normalize
 
 Status = Literal["catalogued", "excluded", "missing"]
@@ -129,7 +130,8 @@ def _hand(book: Book, catalog: Catalog) -> tuple[dict[tuple[int, int], str], dic
 
 
 def scan(book: Book, catalog: Catalog, chapters: tuple[str, ...]) -> ScanResult:
-    """Classify every number token of ``chapters`` (keys as in book.toml)."""
+    """Classify every number token of ``chapters`` (keys as in book.toml); conflicts include
+    every ``restates``/``part-of`` exclusion of those chapters that disagrees with its claim."""
     result = ScanResult([], {}, [])
     claimed = _claimed(book, catalog, result.conflicts)
     hand_tokens, hand_lines = _hand(book, catalog)
@@ -155,6 +157,7 @@ def scan(book: Book, catalog: Catalog, chapters: tuple[str, ...]) -> ScanResult:
                 else:
                     counts.excluded_rule += 1
                     counts.rules[scanned.by or ""] += 1
+    result.conflicts.extend(restatement_conflicts(catalog, chapters))
     return result
 
 
