@@ -84,6 +84,7 @@ def main() -> None:
     cases = {
         "bangcheck claims --json": ([bangcheck, "claims", "--json"], 2.0),
         "bangcheck scan": ([bangcheck, "scan"], 2.0),
+        "bangcheck power --json": ([bangcheck, "power", "--json"], 2.0),
         "bangcheck report": ([bangcheck, "report", "--out", "/tmp/bangcheck-budget-report"], 15.0),
     }
     if not args.skip_pytest:

@@ -58,6 +58,7 @@ SECTIONS = [
     "summary",
     "errata",
     "claims",
+    "power",
     "figures",
     "slips",
     "assumptions",
@@ -398,3 +399,32 @@ def test_a_failing_evaluation_starts_no_background_build(
     session = types.SimpleNamespace(config=config, items=[reporting] + [prop] * 100)
     conftest._start_report_in_background(session)
     assert conftest._REPORT not in config.stash
+
+
+def test_the_detection_power_section(report_dir: Path, evaluation: Evaluation) -> None:
+    """The whole book's report shows the rate of each misprint class, the claims that let a
+    last-digit misprint through with their reasons, and no banner while the targets hold."""
+    html = (report_dir / "index.html").read_text("utf-8")
+    power = evaluation.power()
+    section = html[html.index('<section id="power">') : html.index('<section id="figures">')]
+    for rate in power.classes:
+        assert f'<td>{rate.cls}</td><td class="num">{rate.misprints}</td>' in section
+    assert 'id="power-banner"' not in section
+    through = {m.id for m in power.misses if m.cls == "last-digit"}
+    assert through
+    for ident in through:
+        assert f'<a href="#claim-{ident}"><code>{ident}</code></a>' in section
+
+
+def test_a_miss_without_a_reason_raises_the_banner(
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog
+) -> None:
+    from reference.power import Misprint, Outcome
+
+    evaluation, result = appendix
+    ident = next(iter(evaluation.misprints))
+    silent = Outcome(Misprint("sign", "-9"), "verified", None)
+    spoilt = dataclasses.replace(evaluation, misprints={**evaluation.misprints, ident: [silent]})
+    html = render_page(spoilt, result, catalog, None, figures=[])
+    assert 'id="power-banner"' in html
+    assert "the misprint -9" in html

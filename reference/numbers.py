@@ -139,6 +139,9 @@ def parse_number(text: str, *, sigfigs: int | None = None, exact: bool = False) 
 def _body(
     s: str, raw: str, sigfigs: int | None
 ) -> tuple[Fraction, Fraction, bool, Fraction | None]:
+    if _RE_DECIMAL.fullmatch(s):  # the commonest form first: nothing else is only digits
+        dec = _decimal(s)
+        return _inexact(Fraction(dec), _quantum(dec, sigfigs))
     if m := _RE_POWER.fullmatch(s):
         scale = Fraction(10) ** int(m["exp"])
         mant = m["mant"]
@@ -180,9 +183,6 @@ def _body(
             a = int(m["a"]) if m["a"] else 1
             b = int(m["b"]) if m["b"] else 1
             return _exact(_mp(a * mpmath.sqrt(int(m["r"])) / b))
-    if _RE_DECIMAL.fullmatch(s):
-        dec = _decimal(s)
-        return _inexact(Fraction(dec), _quantum(dec, sigfigs))
     raise NumberFormatError(f"not a number this catalog can read: {raw!r}")
 
 

@@ -220,30 +220,47 @@ def _body_misprints(s: str) -> list[Misprint]:
     return _exact_form_misprints(s)
 
 
-def misprints(text: str) -> list[Misprint]:
-    """Every misprint of ``text`` (a printed token or a ``means`` string) in every class, each
-    a different string with a different value, in a fixed order."""
+def _candidates(text: str) -> list[Misprint]:
+    """The misprint strings of ``text`` in a fixed order, not yet read as numbers."""
     original = normalize(text).strip()
     sign, body, mark = _split_sign(original)
     found = [Misprint(m.cls, sign + m.text + mark) for m in _body_misprints(body)]
     if sign != "±":
         flipped = body if sign == "-" else "-" + body
         found.append(Misprint("sign", flipped + mark))
+    seen = {original}
+    out = []
+    for m in found:
+        if m.text not in seen:
+            seen.add(m.text)
+            out.append(m)
+    return out
+
+
+def _read_misprints(
+    text: str, sigfigs: int | None = None, exact: bool = False
+) -> list[tuple[Misprint, Printed]]:
+    """The misprints of ``text`` with their values read at the given precision, each another
+    string with another value than ``text``'s (read once: this runs for every claim)."""
     try:
-        value = parse_number(original).value
+        value = parse_number(text).value
     except NumberFormatError:
         return []
-    out, seen = [], {original}
-    for m in found:
-        if m.text in seen:
-            continue
-        seen.add(m.text)
+    out = []
+    for m in _candidates(text):
         try:
-            if parse_number(m.text).value != value:
-                out.append(m)
+            printed = parse_number(m.text, sigfigs=sigfigs, exact=exact)
         except (NumberFormatError, ZeroDivisionError):
-            continue  # "1/0" and the like are no numbers a reader would take for one
+            continue  # "1/0", or no digit left to count under reduced sigfigs
+        if printed.value != value:
+            out.append((m, printed))
     return out
+
+
+def misprints(text: str) -> list[Misprint]:
+    """Every misprint of ``text`` (a printed token or a ``means`` string) in every class, each
+    a different string with a different value, in a fixed order."""
+    return [m for m, _ in _read_misprints(text)]
 
 
 # -- judging -----------------------------------------------------------------------------------
@@ -277,11 +294,7 @@ def judge_misprints(claim: Claim, ctx: Context) -> list[Outcome]:
     """Every misprint of a measured claim, judged in its context with its declared precision."""
     stated = claim.means or claim.printed
     out = []
-    for m in misprints(stated):
-        try:
-            printed = parse_number(m.text, sigfigs=claim.sigfigs, exact=claim.exact)
-        except NumberFormatError:
-            continue  # a shifted point under reduced sigfigs may leave no digit to count
+    for m, printed in _read_misprints(stated, claim.sigfigs, claim.exact):
         judgement = judge(printed, ctx)
         verdict = judgement.verdict
         reason = None if verdict == "erratum" else _reason(claim, printed, ctx, judgement)

@@ -157,6 +157,39 @@ def _environment() -> Environment:
     )
 
 
+def _power_section(evaluation: Evaluation) -> dict[str, Any]:
+    """The detection power (design 3a) as the page shows it: rates per class and per chapter,
+    the targets missed, and every claim that lets a last-digit misprint through, with why."""
+    report = evaluation.power()
+    whole_book = len(evaluation) == sum(1 for _ in evaluation.catalog.claims())
+    letting_through: dict[str, dict[str, Any]] = {}
+    for miss in report.misses:
+        if miss.cls != "last-digit":
+            continue
+        row = letting_through.setdefault(
+            miss.id,
+            {
+                "id": miss.id,
+                "line": miss.line,
+                "printed": miss.printed,
+                "misprints": [],
+                "reasons": [],
+            },
+        )
+        row["misprints"].append(miss.misprint)
+        if (miss.reason or "no reason") not in row["reasons"]:
+            row["reasons"].append(miss.reason or "no reason")
+    return {
+        "claims": report.claims,
+        "classes": report.classes,
+        "chapters": report.chapters,
+        "failures": report.failures() if whole_book else [],  # the targets are the book's
+        "whole_book": whole_book,
+        "unexplained": report.unexplained,
+        "last_digit_misses": list(letting_through.values()),
+    }
+
+
 def render_page(
     evaluation: Evaluation,
     scan: ScanResult,
@@ -204,6 +237,7 @@ def render_page(
         errata=errata,
         chapters=chapters,
         failing=[c for c in evaluation if not c.passed and c.verdict != "unmodeled"],
+        power=_power_section(evaluation),
         figures=figures,
         unmodeled=[c for c in evaluation if c.verdict == "unmodeled"],
         properties=properties,
