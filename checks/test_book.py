@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import hashlib
 import itertools
+import os
 from pathlib import Path
 
 import pytest
@@ -104,3 +105,12 @@ def test_chapter_specs(spec: str | None, keys: tuple[str, ...]) -> None:
 def test_bad_chapter_specs(spec: str) -> None:
     with pytest.raises(ValueError, match="chapter"):
         chapter_keys(spec)
+
+
+def test_a_pipe_or_a_device_is_no_book(tmp_path: Path) -> None:
+    pipe = tmp_path / "pipe"
+    os.mkfifo(pipe)
+    with pytest.raises(BookError, match="not a regular file"):
+        load_book(pipe)  # refused at once, never opened (reading it would wait forever)
+    with pytest.raises(BookError, match="not a regular file"):
+        load_book(Path("/dev/zero"))  # never read (it would fill the memory)

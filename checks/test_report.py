@@ -141,7 +141,7 @@ def test_the_command_writes_a_report_of_one_chapter(
 ) -> None:
     out = tmp_path / "out"
     argv = ["report", "--book", str(book.path), "--chapter", "3", "--out", str(out)]
-    assert main([*argv, "--properties", str(tmp_path / "none.json")]) == 0
+    assert main(argv) == 0
     assert capsys.readouterr().out.strip() == str(out / "index.html")
     html = (out / "index.html").read_text("utf-8")
     assert 'id="claim-ch03.suv-vw.ke"' in html
@@ -260,6 +260,27 @@ def test_the_report_finds_the_tests_record_from_the_working_directory_up(
     capsys.readouterr()
     assert "P is conserved" in (out / "index.html").read_text(encoding="utf-8")
     assert sorted(os.listdir(tmp_path / ".bangcheck")) == [".gitignore", "properties.json"]
+
+
+def test_a_missing_record_given_by_name_is_a_clear_error(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    argv = ["report", "--book", str(book.path), "--chapter", "A1", "--out", str(tmp_path / "o")]
+    assert main([*argv, "--properties", str(tmp_path / "typo.json")]) == 2
+    assert capsys.readouterr().err == (
+        f"bangcheck: error: --properties {tmp_path / 'typo.json'}: no such file\n"
+    )
+
+
+def test_an_unreadable_default_record_is_a_warning(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (tmp_path / ".bangcheck").mkdir()
+    (tmp_path / ".bangcheck" / "properties.json").write_text("{broken", encoding="utf-8")
+    monkeypatch.chdir(tmp_path)
+    argv = ["report", "--book", str(book.path), "--chapter", "A1", "--out", str(tmp_path / "o")]
+    assert main(argv) == 0
+    assert "warning: cannot read the invariants record" in capsys.readouterr().err
 
 
 def test_a_record_that_is_not_one_is_a_clear_error(

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import stat
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cache
@@ -20,6 +21,7 @@ import tomli
 BOOK_ENV = "BANGCHECK_BOOK"
 LINE_DIGESTS = "book-lines.b2"  # package data: the known book's line digests
 LINE_DIGEST_SIZE = 4  # bytes per line: a chance changed line goes unseen once in 4 billion
+MAX_BOOK_BYTES = 16 * 2**20  # the book is 0.4 MB: a file this large is read no further
 
 
 class BookError(Exception):
@@ -172,6 +174,12 @@ def load_book(path: Path) -> Book:
     ``BookError`` says how a different file differs."""
     ident = identity()
     try:
+        mode = path.stat().st_mode
+        if not stat.S_ISREG(mode):
+            raise BookError(f"{path} is not a regular file, so not the book")
+        size = path.stat().st_size
+        if size > MAX_BOOK_BYTES:
+            raise BookError(f"{path} holds {size:,} bytes, far more than the book: not the book")
         data = path.read_bytes()
     except OSError as err:
         raise BookError(f"cannot read the book at {path}: {err.strerror or err}") from err

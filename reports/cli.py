@@ -31,7 +31,7 @@ from reports.invariants import (
     default_properties_path,
     read_properties,
 )
-from reports.outdir import OutputError, check_target, write_report_dir
+from reports.outdir import OutputError, check_target, shown, write_report_dir
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report it
@@ -71,7 +71,7 @@ def _parser() -> argparse.ArgumentParser:
     report = sub.add_parser("report", parents=[common], help="the errata report (HTML, CSV, JSON)")
     report.add_argument(
         "--out",
-        type=Path,
+        type=_directory_argument,
         default=Path("reports/out"),
         help="output directory (reports/out); written only when it is missing, empty or a "
         "previous report",
@@ -257,12 +257,44 @@ def _power(args: argparse.Namespace) -> int:
     return EXIT_FINDINGS if failed else EXIT_OK
 
 
+def _directory_argument(text: str) -> Path:
+    """``--out`` as typed: a path, not an empty string (which would mean the working
+    directory)."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("give a directory, not an empty string")
+    return Path(text)
+
+
+def _output_path(given: Path) -> Path:
+    """``--out`` made absolute with its symbolic links followed (the report replaces the
+    directory a link points to, never the link); ``OutputError`` for a link loop."""
+    try:
+        return given.resolve()
+    except (OSError, RuntimeError) as err:
+        raise OutputError(f"--out {shown(given)}: cannot follow its links: {err}") from err
+
+
+def _invariants(given: Path | None) -> dict[str, Any] | None:
+    """The tests' record of invariants: ``--properties`` must exist when given; the default,
+    found from the working directory up, is shown when it can be read and skipped with a
+    warning when it cannot."""
+    if given is not None:
+        if not given.is_file():
+            raise PropertiesError(f"--properties {shown(given)}: no such file")
+        return read_properties(given.resolve())
+    try:
+        return read_properties(default_properties_path())
+    except PropertiesError as err:
+        print(f"bangcheck: warning: {err}; the report shows no invariants", file=sys.stderr)
+        return None
+
+
 def _report(args: argparse.Namespace) -> int:
     from reports.page import build_report
 
-    out = args.out.resolve()
+    out = _output_path(args.out)
     check_target(out)  # before the work: a refused directory is said at once
-    properties = read_properties((args.properties or default_properties_path()).resolve())
+    properties = _invariants(args.properties)
     book = load_book(book_path(args.book))
     catalog = checked_catalog(book, args.catalog)
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
@@ -270,7 +302,9 @@ def _report(args: argparse.Namespace) -> int:
     print("bangcheck: rendering the report", file=sys.stderr)
     files = build_report(evaluation, result, catalog, properties)
     write_report_dir(out, files)
-    print(f"bangcheck: wrote {out / 'index.html'}, errata.csv and claims.json", file=sys.stderr)
+    print(
+        f"bangcheck: wrote {shown(out / 'index.html')}, errata.csv and claims.json", file=sys.stderr
+    )
     print(out / "index.html")
     failing = _failing(evaluation, strict=False)
     if failing:

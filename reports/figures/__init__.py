@@ -17,8 +17,8 @@ import multiprocessing
 import os
 import pkgutil
 import re
+import signal
 from collections.abc import Callable
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -140,6 +140,10 @@ def _draw(key: str) -> str:
     return _svg(fig, spec.key)
 
 
+def _ignore_interrupts() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def render_all(evaluation: Evaluation, workers: int | None = None) -> list[RenderedFigure]:
     """Every registered figure whose claims are evaluated, as inline SVG, in chapter order,
     drawn in parallel by ``workers`` forked processes (by default one per core, at most 4;
@@ -159,8 +163,10 @@ def render_all(evaluation: Evaluation, workers: int | None = None) -> list[Rende
     workers = min(len(keys), workers or os.cpu_count() or 1, 4)
     if workers > 1 and "fork" in multiprocessing.get_all_start_methods():
         context = multiprocessing.get_context("fork")
-        with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-            svgs = list(pool.map(_draw, keys))
+        # an interrupt (Ctrl-C reaches the whole process group) is the parent's to handle:
+        # leaving the pool's block terminates the workers, which ignore it
+        with context.Pool(workers, initializer=_ignore_interrupts) as pool:
+            svgs = pool.map(_draw, keys)
     else:
         svgs = [_draw(key) for key in keys]
     return [
