@@ -39,6 +39,7 @@ from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
 from reports.background import BackgroundReport
+from reports.errata_sheet import verdict_summary
 
 IN_CI = os.environ.get("CI", "").lower() == "true"
 MIN_EXAMPLES = 50  # the ci profile's floor: speed never hollows a property out
@@ -59,7 +60,9 @@ _EVALUATION = pytest.StashKey[Evaluation]()
 _SCAN = pytest.StashKey[ScanResult]()
 _REPORT = pytest.StashKey[BackgroundReport]()
 _WORKER_VERDICTS = pytest.StashKey[Counter[str]]()
+_WORKER_ERRORS = pytest.StashKey[int | None]()
 _VERDICTS_KEY = "bangcheck_verdicts"  # in an xdist worker's workeroutput
+_ERRORS_KEY = "bangcheck_errors"
 
 
 def pytest_addoption(parser: pytest.Parser) -> None:
@@ -256,6 +259,7 @@ def pytest_sessionfinish(session: pytest.Session) -> None:
     evaluation = session.config.stash.get(_EVALUATION, None)
     if output is not None and evaluation is not None:
         output[_VERDICTS_KEY] = dict(evaluation.verdict_counts())
+        output[_ERRORS_KEY] = len(evaluation.errors())
 
 
 @pytest.hookimpl(optionalhook=True)
@@ -263,9 +267,11 @@ def pytest_testnodedown(node: Any, error: object) -> None:
     """The controller keeps the first verdict counts a worker sends (all workers evaluate the
     same catalog against the same book), so it need not evaluate the catalog once more."""
     del error
-    counts = getattr(node, "workeroutput", {}).get(_VERDICTS_KEY)
+    output = getattr(node, "workeroutput", {})
+    counts = output.get(_VERDICTS_KEY)
     if counts is not None and _WORKER_VERDICTS not in node.config.stash:
         node.config.stash[_WORKER_VERDICTS] = Counter(counts)
+        node.config.stash[_WORKER_ERRORS] = output.get(_ERRORS_KEY)
 
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)
@@ -276,11 +282,13 @@ def pytest_terminal_summary(
     counts = config.stash.get(_WORKER_VERDICTS, None)
     if counts is None and _CATALOG not in config.stash:
         return result  # the catalog was refused at collection: the usage error says why
+    errors = config.stash.get(_WORKER_ERRORS, None)
     if counts is None:
         evaluation = evaluation_of(config)
-        counts = evaluation.verdict_counts() if evaluation is not None else None
+        if evaluation is not None:
+            counts, errors = evaluation.verdict_counts(), len(evaluation.errors())
     if counts is not None:
-        shown = ", ".join(f"{v} {counts[v]}" for v in VERDICTS if counts[v])
+        shown = verdict_summary(((v, counts[v]) for v in VERDICTS), errors)
         total = sum(counts.values())
         terminalreporter.write_line(f"bangcheck verdicts: {total} claims: {shown}")
     return result

@@ -176,6 +176,20 @@ def parabola_geometry(a: Any) -> ParabolaGeometry:
     )
 
 
+def parabola_height_for_focus(p: Any, x: Any) -> Any:
+    """Height y above its tip of the point at ``x`` of the parabola whose focus is ``p`` above
+    the tip (Fig. 9.3b): the point as far from the focus (0, p) as from the directrix y = -p,
+    x^2 + (y - p)^2 = (y + p)^2, so y = x^2 / (4 p). Plain operators (exact, symbolic)."""
+    return x * x / (4 * p)
+
+
+def parabola_height_for_latus(lam: Any, x: Any) -> Any:
+    """Height y above its tip of the point at ``x`` of the parabola of semi-latus rectum
+    ``lam`` (the half-width at the focus, Fig. 9.4): the focus is at p = lam / 2, so
+    y = x^2 / (4 p) = x^2 / (2 lam)."""
+    return parabola_height_for_focus(lam / 2, x)
+
+
 def focal_drop_angle(slope: Any) -> float:
     """Angle between the focal radius and the vertical drop line to the directrix at the point of
     the parabola whose tangent has slope ``slope``, radians (Figs. 9.4, 9.7).

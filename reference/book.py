@@ -7,6 +7,7 @@ here are the citation keys of the catalog.
 
 from __future__ import annotations
 
+import bisect
 import hashlib
 import os
 import stat
@@ -48,6 +49,15 @@ class Chapter:
 
 
 @dataclass(frozen=True)
+class Section:
+    """A section heading of the book: its line, its text and its level."""
+
+    line: int
+    heading: str
+    level: str
+
+
+@dataclass(frozen=True)
 class Identity:
     """What ``reference/book.toml`` says the book is."""
 
@@ -55,12 +65,19 @@ class Identity:
     lines: int
     title: str
     chapters: tuple[Chapter, ...]
+    sections: tuple[Section, ...] = ()
 
     def chapter(self, key: str) -> Chapter:
         for chapter in self.chapters:
             if chapter.key == key:
                 return chapter
         raise KeyError(key)
+
+    def section_of(self, line: int) -> Section | None:
+        """The section a line is in: the last heading at or before it (None before the
+        first)."""
+        index = bisect.bisect_right([s.line for s in self.sections], line) - 1
+        return self.sections[index] if index >= 0 else None
 
 
 @cache
@@ -72,7 +89,10 @@ def identity() -> Identity:
     for i, row in enumerate(rows):
         end = rows[i + 1]["start"] - 1 if i + 1 < len(rows) else data["lines"]
         chapters.append(Chapter(row["key"], row["start"], end, row["title"], row["heading"]))
-    return Identity(data["sha256"], data["lines"], data["title"], tuple(chapters))
+    sections = tuple(
+        Section(row["line"], row["heading"], row["level"]) for row in data.get("section", [])
+    )
+    return Identity(data["sha256"], data["lines"], data["title"], tuple(chapters), sections)
 
 
 @dataclass(frozen=True, eq=False)  # compared and hashed by identity: one Book per file read

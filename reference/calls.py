@@ -11,14 +11,14 @@ from __future__ import annotations
 
 import itertools
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 from reference.models import follow, resolve
 from reference.numbers import Printed, parse_number
-from reference.schema import Assumption, Claim, ClaimRef
+from reference.schema import Assumption, Claim, ClaimRef, SymbolRef
 from reference.tables import NO_CONVERSION, unit_factor
 
 MAX_ROUNDED_INPUTS = 10  # 2^10 corners at most; beyond that no interval is computed
@@ -73,12 +73,19 @@ def build_args(
     raw: dict[str, Any],
     lookup: Callable[[str], tuple[Claim, Printed]],
     rounded: Callable[[str], bool],
+    symbols: Mapping[str, Any] | None = None,
 ) -> tuple[dict[str, Any], list[Input]]:
     """Concrete keyword arguments for a model, and the referenced inputs among them;
-    ``rounded(id)`` says whether a referenced claim is a rounded input (design 3a)."""
+    ``rounded(id)`` says whether a referenced claim is a rounded input (design 3a), and
+    ``symbols`` gives a formula claim's ``{ symbol = NAME }`` arguments their values (sympy
+    symbols, or numbers at a point)."""
     inputs: list[Input] = []
 
     def convert(value: Any, path: tuple[str | int, ...]) -> Any:
+        if isinstance(value, SymbolRef):
+            if symbols is None or value.symbol not in symbols:
+                raise KeyError(f"{{ symbol = {value.symbol!r} }} outside a formula claim")
+            return symbols[value.symbol]
         if isinstance(value, ClaimRef):
             ref, printed = lookup(value.claim)
             is_rounded = rounded(ref.id) and bool(printed.half_width)

@@ -20,11 +20,12 @@ from typing import Literal
 
 from reference.numbers import Printed
 
-Verdict = Literal["verified", "rounding", "erratum", "given", "unmodeled", "indeterminate"]
+Verdict = Literal["verified", "rounding", "erratum", "dated", "given", "unmodeled", "indeterminate"]
 VERDICTS: tuple[Verdict, ...] = (
     "verified",
     "rounding",
     "erratum",
+    "dated",
     "given",
     "unmodeled",
     "indeterminate",
@@ -42,6 +43,17 @@ class Judgement:
     verdict: Verdict
     reason: RoundingReason | None
     tolerance: Fraction | None
+    edition: str | None = None  # the older edition of a constant a ``dated`` value matches
+
+
+@dataclass(frozen=True)
+class Edition:
+    """An older edition of a constant: its short name, value (printed unit) and widening of h
+    (twice its uncertainty)."""
+
+    name: str
+    value: Fraction
+    extra: Fraction
 
 
 @dataclass(frozen=True)
@@ -52,7 +64,8 @@ class Context:
     imaginary part that must vanish); ``interval`` its range over the box of rounded inputs;
     ``error`` its declared numerical error; ``extra`` widens h (twice a constant's standard
     uncertainty); ``exact_only`` admits no rounding at all (a count, a whole datum printed
-    whole); ``truncation`` is a truncation the claim declares.
+    whole); ``truncation`` is a truncation the claim declares; ``editions`` are a constant's
+    older editions, which a value today's misses may match (``dated``).
     """
 
     model: Fraction
@@ -65,6 +78,7 @@ class Context:
     truncation: bool = False
     rel_tol: Fraction | None = None
     bounds: tuple[Printed, Printed] | None = None
+    editions: tuple[Edition, ...] = ()
 
 
 def exact(value: float | int | Fraction) -> Fraction:
@@ -165,12 +179,22 @@ def _judge_at(printed: Printed, ctx: Context, model: Fraction) -> Judgement:
 
 def judge(printed: Printed, ctx: Context) -> Judgement:
     """The verdict of ``printed`` in ``ctx``; ``indeterminate`` where it would change within
-    the model's declared error."""
+    the model's declared error; ``dated`` where today's value misses and an older edition of
+    the constant matches (the one closest to the printed value)."""
     judgement = _judge_at(printed, ctx, ctx.model)
     if ctx.error:
         for sign in (-1, 1):
             if _judge_at(printed, ctx, ctx.model + sign * ctx.error).verdict != judgement.verdict:
                 return Judgement("indeterminate", None, judgement.tolerance)
+    if judgement.verdict == "erratum" and ctx.editions and ctx.relation == "=":
+        matching = [
+            e
+            for e in ctx.editions
+            if judge_equal(printed, Context(e.value, extra=e.extra)).verdict == "verified"
+        ]
+        if matching:
+            best = min(matching, key=lambda e: abs(e.value - printed.value))
+            return Judgement("dated", None, judgement.tolerance, best.name)
     return judgement
 
 

@@ -11,12 +11,14 @@ import dataclasses
 import math
 import sys
 from collections import Counter
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from decimal import Decimal
 from fractions import Fraction
 from functools import cached_property
 from typing import TYPE_CHECKING, Any
+
+import sympy
 
 from reference.book import Book, book_path, chapter_keys, load_book
 from reference.calls import (
@@ -31,9 +33,11 @@ from reference.calls import (
     grid_steps,
 )
 from reference.catalog import Catalog
-from reference.compare import Context, Judgement, Verdict, exact, inside, judge, judge_equal
+from reference.compare import Context, Edition, Judgement, Verdict, exact, inside, judge
 from reference.diagnose import diagnose
-from reference.models import is_monotonic, resolve
+from reference.errata import Error, errors
+from reference.formulas import FormulaError, compare, generic_points, make_symbol, parse_formula
+from reference.models import PickError, follow, is_monotonic, resolve
 from reference.numbers import EXACT_ULPS, Printed, parse_number
 from reference.power import (
     Outcome,
@@ -64,7 +68,7 @@ class EvaluatedClaim:
     line_end: int | None
     occurrence: int | None
     quote: str
-    printed: str
+    printed: str | None
     means: str | None
     garble: str | None
     value: float | None
@@ -99,19 +103,34 @@ class EvaluatedClaim:
     figure: str | None
     equation: str | None
     note: str | None
+    expression: str | None
+    model_expression: str | None
+    symbols: dict[str, Any] | None
+    tokens: list[dict[str, Any]] | None
+    edition: str | None
+    matched_edition: str | None
+    same_error: str | None
+    summary: str | None
+    error_class: str | None
+    section: str | None
     catches: list[str] | None
 
     @property
     def passed(self) -> bool:
-        """The claim test's condition: verdict equals expect, and an erratum's model agrees with
-        its ``correct``."""
+        """The claim test's condition: verdict equals expect, an erratum's model agrees with its
+        ``correct``, and a dated claim matched the edition it names."""
         if self.verdict != self.expect:
             return False
+        if self.expect == "dated":
+            return self.matched_edition is not None and self.matched_edition == self.edition
         return self.expect != "erratum" or self.correct_agrees is True
 
     def to_json(self) -> dict[str, Any]:
-        """The claim as a JSON object (missing values null, never NaN)."""
-        return {f.name: getattr(self, f.name) for f in fields(self) if f.name != "file"}
+        """The claim as a JSON object (missing values null, never NaN); the error class is
+        ``class`` there."""
+        out = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "file"}
+        out["class"] = out.pop("error_class")
+        return out
 
 
 @dataclass(frozen=True)
@@ -150,11 +169,22 @@ class Evaluation(Sequence[EvaluatedClaim]):
     def verdict_counts(self) -> Counter[str]:
         return Counter(c.verdict for c in self.claims)
 
+    def errors(self) -> list[Error]:
+        """The errors of the book among the evaluated claims (one per error, however many
+        claims print it), in book order."""
+        by_id = self.catalog.by_id()
+        return errors(
+            ((by_id[c.id], c.chapter) for c in self.claims if c.verdict == "erratum"),
+            by_id,
+            self.book.lines,
+            self.book.identity,
+        )
+
     def power(self) -> PowerReport:
         """The detection power of the evaluated claims (design 3a), from the misprints judged
         during the evaluation."""
         return power_report(
-            (c.id, c.chapter, c.line, c.means or c.printed, self.misprints[c.id])
+            (c.id, c.chapter, c.line, c.means or c.printed or "", self.misprints[c.id])
             for c in self.claims
             if c.id in self.misprints
         )
@@ -184,6 +214,16 @@ def _correct_string(printed: Printed, model: Fraction) -> str | None:
     assert isinstance(exponent, int)
     rounded = round(model / printed.quantum) * printed.quantum
     return f"{Decimal(rounded.numerator) / Decimal(rounded.denominator):.{max(0, -exponent)}f}"
+
+
+@dataclass(frozen=True)
+class FormulaResult:
+    """A formula claim's verdict, the model's formula as text (None where the model is
+    numeric), and whether the catalog's ``correct`` formula agrees with the model."""
+
+    judgement: Judgement
+    model_expression: str | None
+    correct_agrees: bool | None
 
 
 @dataclass(frozen=True)
@@ -362,6 +402,10 @@ class _Evaluator:
         factor = unit_factor(claim.unit)
         value = exact(const.value / factor)
         whole = const.uncertainty == 0 and value.denominator == 1
+        editions = tuple(
+            Edition(old.edition, exact(old.value / factor), exact(2 * old.uncertainty / factor))
+            for old in const.older
+        )
         return Context(
             model=value,
             relation=claim.relation,
@@ -369,27 +413,61 @@ class _Evaluator:
             exact_only=whole and printed.value.denominator == 1 and printed.quantum == 1,
             truncation=claim.rounding == "truncation",
             rel_tol=None if claim.rel_tol is None else Fraction(claim.rel_tol),
+            editions=editions,
         )
 
-    @staticmethod
-    def dated_match(claim: Claim, printed: Printed, key: str) -> str | None:
-        """The older edition of a constant the printed value matches, if today's does not."""
-        const = constants()[key]
-        factor = unit_factor(claim.unit)
-        matching = [
-            old
-            for old in const.editions[1:]
-            if judge_equal(
-                printed,
-                Context(exact(old.value / factor), extra=exact(2 * old.uncertainty / factor)),
-            ).verdict
-            == "verified"
-        ]
-        if not matching:
-            return None
-        # the edition the book most likely used: the closest value among those matching
-        best = min(matching, key=lambda e: abs(exact(e.value / factor) - printed.value))
-        return f"dated: matches {best.edition} ({best.value:g} {const.unit})"
+    # -- formula claims --------------------------------------------------------------------
+    def judge_formula(self, claim: Claim) -> FormulaResult:
+        """A formula claim: the book's expression against the model's formula, symbolically or
+        at generic points (design 2a); ``correct`` is checked against the model the same way."""
+        assert claim.expression is not None
+        assert claim.model is not None
+        symbols = {
+            name: make_symbol(name, spec.model_dump(exclude_none=True))
+            for name, spec in claim.symbols.items()
+        }
+        domains = {name: spec.domain for name, spec in claim.symbols.items() if spec.domain}
+        points = generic_points(symbols, domains)
+        try:
+            book = parse_formula(claim.expression, symbols)
+            model, shown = self.formula_model(claim, symbols)
+            comparison = compare(book, model, points)
+            agrees = None
+            if claim.correct is not None:
+                agrees = compare(parse_formula(claim.correct, symbols), model, points).agrees
+        except FormulaError as err:
+            raise ModelCallError(claim.id, "expression", str(err)) from err
+        verdict: Verdict = "verified" if comparison.agrees else "erratum"
+        return FormulaResult(Judgement(verdict, None, None), shown, agrees)
+
+    def formula_model(
+        self, claim: Claim, symbols: dict[str, sympy.Symbol]
+    ) -> tuple[sympy.Expr | Callable[[Mapping[sympy.Symbol, float]], complex], str | None]:
+        """The correct formula: the model called with sympy symbols, if it returns an
+        expression; else a function of a point that calls it with numbers."""
+        assert claim.model is not None
+        func = resolve(claim.model)
+
+        def call(values: Mapping[str, Any]) -> Any:
+            args, _ = build_args(claim.args, self.lookup, self.is_rounded_input, symbols=values)
+            return follow(func(**args), claim.pick)
+
+        try:
+            result = call(symbols)
+        except (TypeError, ValueError, ArithmeticError, AttributeError, PickError):
+            result = None
+        if isinstance(result, sympy.Basic | int | Fraction):
+            expr = sympy.sympify(result)
+            return expr, str(expr)
+
+        def at(point: Mapping[sympy.Symbol, float]) -> complex:
+            values = {name: point[sym] for name, sym in symbols.items()}
+            try:
+                return complex(call(values))
+            except (TypeError, ValueError, ArithmeticError) as err:
+                raise ModelCallError(claim.id, "model", f"{claim.model} raised {err}") from err
+
+        return at, None
 
     # -- verdicts ------------------------------------------------------------------------
     def evaluate(self, ident: str) -> EvaluatedClaim:
@@ -397,19 +475,23 @@ class _Evaluator:
             return self.done[ident]
         claim = self.claims[ident]
         root = self.root(claim)
-        printed = parsed(claim)
+        printed = parsed(claim) if claim.kind != "formula" else None
         modelled = _Modelled()
         auto: str | None = None
         ctx: Context | None = None
-        if root.kind == "given":
+        formula: FormulaResult | None = None
+        if claim.kind == "formula":
+            formula = self.judge_formula(claim)
+            judgement = formula.judgement
+        elif root.kind == "given":
             judgement = Judgement("given", None, None)
         elif root.kind == "constant":
             assert root.constant is not None
             ctx = self.constant_context(claim, printed, root.constant)
             modelled = _Modelled(float(ctx.model))
             judgement = judge(printed, ctx)
-            if judgement.verdict == "erratum":
-                auto = self.dated_match(claim, printed, root.constant)
+            if judgement.verdict == "dated":
+                auto = f"dated: matches {judgement.edition}"
         elif claim.restates:
             self.evaluate(claim.restates)
             source = self.modelled[claim.restates]
@@ -432,26 +514,34 @@ class _Evaluator:
         self.modelled[ident] = modelled
         if ctx is not None:
             self.contexts[ident] = ctx
-        self.done[ident] = result = self.record(claim, printed, judgement, modelled, auto)
+        self.done[ident] = result = self.record(claim, printed, judgement, modelled, auto, formula)
         return result
 
     def record(
         self,
         claim: Claim,
-        printed: Printed,
+        printed: Printed | None,
         judgement: Judgement,
         modelled: _Modelled,
         auto: str | None,
+        formula: FormulaResult | None = None,
     ) -> EvaluatedClaim:
         model_value = modelled.value
         interval = modelled.interval
         correct_agrees = None
-        if claim.correct is not None and model_value is not None:
+        if formula is not None:
+            correct_agrees = formula.correct_agrees
+        elif claim.correct is not None and model_value is not None:
             correct = parse_number(claim.correct, sigfigs=claim.sigfigs)
             correct_agrees = inside(abs(_real(model_value) - correct.value), correct.tolerance)
         diagnosis = None
-        if judgement.verdict == "erratum" or claim.expect == "erratum":
-            if auto is None and model_value is not None and not isinstance(model_value, complex):
+        if judgement.verdict in ("erratum", "dated") or claim.expect in ("erratum", "dated"):
+            if (
+                auto is None
+                and printed is not None
+                and model_value is not None
+                and not isinstance(model_value, complex)
+            ):
                 target = claim.correct or _correct_string(printed, exact(model_value))
                 if target is not None:
                     found = diagnose(printed, parse_number(target))
@@ -476,7 +566,7 @@ class _Evaluator:
             printed=claim.printed,
             means=claim.means,
             garble=claim.garble,
-            value=_as_json_number(printed.value),
+            value=None if printed is None else _as_json_number(printed.value),
             model_value=_as_json_number(model_value),
             interval=[float(interval[0]), float(interval[1])] if interval else None,
             interval_note=modelled.interval_note,
@@ -513,12 +603,45 @@ class _Evaluator:
             figure=claim.figure,
             equation=claim.equation,
             note=claim.note,
+            expression=claim.expression,
+            model_expression=None if formula is None else formula.model_expression,
+            symbols=dumped["symbols"] or None,
+            tokens=dumped["tokens"] or None,
+            edition=claim.edition,
+            matched_edition=judgement.edition,
+            same_error=claim.same_error,
+            summary=claim.summary,
+            error_class=None,
+            section=None,
             catches=None,
         )
 
 
 def _real(value: Any) -> Fraction:
     return exact(value.real if isinstance(value, complex) else value)
+
+
+def _located(claims: list[EvaluatedClaim], catalog: Catalog, book: Book) -> list[EvaluatedClaim]:
+    """The claims with their section, and the errata with the class of their error."""
+    by_id = catalog.by_id()
+    found = errors(
+        ((by_id[c.id], c.chapter) for c in claims if c.verdict == "erratum"),
+        by_id,
+        book.lines,
+        book.identity,
+    )
+    classes = {claim.id: e.error_class for e in found for claim in e.claims}
+    out = []
+    for c in claims:
+        section = book.identity.section_of(c.line)
+        out.append(
+            dataclasses.replace(
+                c,
+                section=section.heading if section is not None else None,
+                error_class=classes.get(c.id),
+            )
+        )
+    return out
 
 
 def evaluate_catalog(
@@ -541,6 +664,7 @@ def evaluate_catalog(
         if progress and (i % 200 == 0 or i == len(selected)):
             print(f"bangcheck: evaluated {i}/{len(selected)} claims", file=sys.stderr)
     centres = {ident: m.centre for ident, m in evaluator.modelled.items() if m.centre is not None}
+    out = _located(out, catalog, book)
     return Evaluation(
         tuple(out),
         catalog,

@@ -27,7 +27,7 @@ _DECIMAL = r"\d[\d,]*(?:\.\d+)?|\.\d+"
 _RE_POWER = re.compile(rf"(?P<mant>{_DECIMAL}|\(\d+/\d+\))[·⋅]10(?P<exp>[-+]\d+)")
 _RE_BARE_POWER = re.compile(r"10(?P<exp>-\d{1,2})")
 _RE_E = re.compile(rf"(?P<mant>{_DECIMAL}) ?[Ee](?P<exp>[-+]?\d+)")
-_RE_CARET = re.compile(rf"(?P<base>{_DECIMAL})\^(?P<exp>[-+]?\d+)")
+_RE_CARET = re.compile(rf"(?P<base>{_DECIMAL})\^(?P<exp>[-+]?\d+)(?:e(?P<scale>[-+]?\d+))?")
 _RE_FRACTION = re.compile(r"(?P<p>\d+)/(?P<q>\d+)")
 _RE_PI = re.compile(r"(?P<a>\d*)π(?:/(?P<b>\d+))?|(?P<c>\d+)/π")
 _RE_ROOT = re.compile(r"(?P<a>\d*)√(?P<r>\d+)(?:/(?P<b>\d+))?|(?P<c>\d+)/√(?P<s>\d+)")
@@ -104,7 +104,8 @@ def parse_number(text: str, *, sigfigs: int | None = None, exact: bool = False) 
     Accepts decimals with thousands commas, signs (``-``, ``−``, ``–``, ``+``, ``±``), ``%`` and
     ``°`` marks, E-notation ("6.282 E6", "1.67e-27"), the book's flattened powers of ten
     ("2·10-27", "(2/3)·10-27", "10-25"), powers written with a caret ("60^2", "10^-25"; exact
-    when the base is an integer, else the base's half-width propagated), fractions "p/q",
+    when the base is an integer, else the base's half-width propagated; "6.28^2e6" is 6.28^2
+    times 10^6, its precision from its base), fractions "p/q",
     multiples and fractions of pi ("2π/3", "180/π") and roots ("√3/2", "1/√2").
     ``sigfigs`` counts fewer significant digits than printed; ``exact`` reads a printed integer
     as an exact amount (the "1" of "1 radian"), not as one rounded to the unit. Raises
@@ -160,11 +161,12 @@ def _body(
         base_dec = _decimal(m["base"])
         exp = int(m["exp"])
         base = Fraction(base_dec)
-        value = base**exp
+        scale = Fraction(10) ** int(m["scale"] or 0)  # "6.28^2e6": 6.28^2 x 10^6
+        value = base**exp * scale
         if base_dec.as_tuple().exponent == 0 and sigfigs is None:
             return _exact(value)
         h_base = _quantum(base_dec, sigfigs) / 2
-        half = abs(exp) * abs(base) ** (exp - 1) * h_base
+        half = abs(exp) * abs(base) ** (exp - 1) * h_base * scale
         return value, half, False, 2 * half
     if m := _RE_FRACTION.fullmatch(s):
         if int(m["q"]) == 0:

@@ -267,14 +267,22 @@ def misprints(text: str) -> list[Misprint]:
 
 
 def measured(claim: Claim) -> bool:
-    """Whether a claim is in the measure: relation ``=``, expected ``verified``, a number."""
-    return claim.relation == "=" and claim.expect == "verified" and bool(claim.printed)
+    """Whether a claim is in the measure: relation ``=``, expected ``verified``, a printed
+    number (not a formula)."""
+    return (
+        claim.relation == "="
+        and claim.expect == "verified"
+        and claim.printed is not None
+        and claim.kind != "formula"
+    )
 
 
 def _reason(claim: Claim, printed: Printed, ctx: Context, judgement: Judgement) -> Reason | None:
     """Why a misprint with this judgement was not caught, or None if nothing explains it."""
     if judgement.verdict == "indeterminate":
         return "model-error"
+    if judgement.verdict == "dated":
+        return "matches-edition"
     if judgement.verdict == "rounding":
         return "input-interval" if judgement.reason == "input-rounding" else "declared-truncation"
     value = abs(ctx.model) if printed.absolute else ctx.model

@@ -86,9 +86,12 @@ def _hand_key(reason: str) -> str:
     return word
 
 
-def _claimed(book: Book, catalog: Catalog, conflicts: list[str]) -> dict[tuple[int, int], str]:
+def _claimed(
+    book: Book, catalog: Catalog, conflicts: list[str], formula_keys: set[tuple[int, int]]
+) -> dict[tuple[int, int], str]:
     """(line, token start) of every catalogued token, with the claim id; a token two claims
-    cover is a conflict."""
+    cover is a conflict. The tokens a formula claim lists go into ``formula_keys`` too: a rule
+    may match them (design 2a)."""
     out: dict[tuple[int, int], str] = {}
 
     def mark(tok: Token, ident: str) -> None:
@@ -97,6 +100,13 @@ def _claimed(book: Book, catalog: Catalog, conflicts: list[str]) -> dict[tuple[i
             conflicts.append(f"line {tok.line} token {tok.text!r}: claimed by {other} and {ident}")
 
     for _, claim in catalog.claims():
+        for listed in claim.tokens:
+            found, _ = find(book, listed.line, listed.token, listed.occurrence)
+            for tok in found.tokens if found is not None else ():
+                mark(tok, claim.id)
+                formula_keys.add((tok.line, tok.start))
+        if claim.printed is None:
+            continue  # a formula, or an error with no number token: anchored by its quote
         match, _ = find(book, claim.line, claim.printed, claim.occurrence)
         if match is None:
             continue  # the validator reports it
@@ -133,7 +143,8 @@ def scan(book: Book, catalog: Catalog, chapters: tuple[str, ...]) -> ScanResult:
     """Classify every number token of ``chapters`` (keys as in book.toml); conflicts include
     every ``restates``/``part-of`` exclusion of those chapters that disagrees with its claim."""
     result = ScanResult([], {}, [])
-    claimed = _claimed(book, catalog, result.conflicts)
+    formula_keys: set[tuple[int, int]] = set()
+    claimed = _claimed(book, catalog, result.conflicts, formula_keys)
     hand_tokens, hand_lines = _hand(book, catalog)
     for key in chapters:
         chapter = book.identity.chapter(key)
@@ -145,7 +156,9 @@ def scan(book: Book, catalog: Catalog, chapters: tuple[str, ...]) -> ScanResult:
             spans = rule_spans(book.lines, number)
             for tok in tokens:
                 counts.tokens += 1
-                scanned = _classify(key, tok, spans, claimed, hand_tokens, hand_lines, result)
+                scanned = _classify(
+                    key, tok, spans, claimed, hand_tokens, hand_lines, result, formula_keys
+                )
                 result.tokens.append(scanned)
                 if scanned.status == "catalogued":
                     counts.catalogued += 1
@@ -169,13 +182,14 @@ def _classify(
     hand_tokens: dict[tuple[int, int], str],
     hand_lines: dict[int, str],
     result: ScanResult,
+    formula_keys: set[tuple[int, int]],
 ) -> ScannedToken:
     key = (tok.line, tok.start)
     rule = excluded_by(spans, tok.start, tok.end)
     hand = hand_tokens.get(key)
     where = f"line {tok.line} token {tok.text!r}"
     if key in claimed:
-        if rule:
+        if rule and key not in formula_keys:
             result.conflicts.append(
                 f"{where}: catalogued ({claimed[key]}) but rule {rule} excludes it"
             )

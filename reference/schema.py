@@ -14,8 +14,8 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field, StringConstraints
 from typing_extensions import TypeAliasType
 
-Kind = Literal["derived", "given", "constant", "identity", "count"]
-Expect = Literal["verified", "rounding", "erratum", "given"]
+Kind = Literal["derived", "given", "constant", "identity", "count", "formula"]
+Expect = Literal["verified", "rounding", "erratum", "given", "dated"]
 Relation = Literal["=", "~", "<", ">", "<=", ">=", "between", "order"]
 Garble = Literal[
     "superscript", "root-lost", "fraction-split", "doubled-glyph", "minus-lost", "other"
@@ -79,10 +79,38 @@ class ClaimRef(_Strict):
     claim: Text
 
 
+class SymbolRef(_Strict):
+    """``{ symbol = "A" }`` in a formula claim's ``args``: the formula's symbol A."""
+
+    symbol: Text
+
+
 ArgValue = TypeAliasType(
     "ArgValue",
-    "int | float | str | ClaimRef | list[ArgValue]",  # type: ignore[misc]
+    "int | float | str | ClaimRef | SymbolRef | list[ArgValue]",  # type: ignore[misc]
 )
+
+
+class SymbolSpec(_Strict):
+    """A formula symbol's sympy assumptions and, optionally, the domain its generic points
+    are drawn from."""
+
+    real: bool | None = None
+    positive: bool | None = None
+    negative: bool | None = None
+    nonnegative: bool | None = None
+    nonzero: bool | None = None
+    integer: bool | None = None
+    complex: bool | None = None
+    domain: Annotated[list[float], Field(min_length=2, max_length=2)] | None = None
+
+
+class TokenRef(_Strict):
+    """A number token a formula claim covers: its line, its text and which occurrence."""
+
+    line: Line
+    token: Text
+    occurrence: Annotated[int, Field(ge=1)] | None = None
 
 
 class Diagnosis(_Strict):
@@ -107,7 +135,7 @@ class Claim(_Strict):
     id: Annotated[str, StringConstraints(pattern=r"^ch(\d\d|A1)\.[A-Za-z0-9][\w.\-]*$")]
     line: Line
     quote: Text
-    printed: Text
+    printed: Text | None = None
     quantity: Text
     kind: Kind
     expect: Expect
@@ -131,6 +159,12 @@ class Claim(_Strict):
     rounding: Literal["truncation"] | None = None
     exact: bool = False
     monotonic: bool | None = None
+    expression: Text | None = None
+    symbols: dict[str, SymbolSpec] = Field(default_factory=dict)
+    tokens: list[TokenRef] = Field(default_factory=list)
+    edition: Text | None = None
+    same_error: Text | None = None
+    summary: Text | None = None
     correct: Text | None = None
     diagnosis: Diagnosis | None = None
     figure: Text | None = None

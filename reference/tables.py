@@ -29,11 +29,12 @@ class Unit:
 
 @dataclass(frozen=True)
 class Edition:
-    """One edition of a constant's value: the current one or an older one."""
+    """One edition of a constant's value: the current one or an older one, with its source."""
 
     edition: str
     value: float
     uncertainty: float
+    source: str = ""
 
 
 @dataclass(frozen=True)
@@ -50,11 +51,12 @@ class Constant:
     codata: str | None
     derived: str | None
     older: tuple[Edition, ...]
+    date: bool = False
 
     @property
     def editions(self) -> tuple[Edition, ...]:
         """The current edition first, then the older ones as listed."""
-        return (Edition(self.edition, self.value, self.uncertainty), *self.older)
+        return (Edition(self.edition, self.value, self.uncertainty, self.source), *self.older)
 
 
 def _read(name: str) -> dict:
@@ -136,9 +138,13 @@ def constants() -> Mapping[str, Constant]:
                 _text(key, old, "edition") or "",
                 _number(key, old, "value"),
                 _number(key, old, "uncertainty") if "uncertainty" in old else 0.0,
+                _text(key, old, "source") or "",
             )
             for old in row.get("older", [])
         )
+        date = row.get("date", False)
+        if not isinstance(date, bool):
+            raise ValueError(f"constants.toml: constant {key!r}: field 'date' must be a boolean")
         derived = _text(key, row, "derived", required=False)
         if derived is not None and key not in DERIVED:
             raise ValueError(f"constants.toml: constant {key!r}: derived, but no computation")
@@ -153,5 +159,6 @@ def constants() -> Mapping[str, Constant]:
             codata=_text(key, row, "codata", required=False),
             derived=derived,
             older=older,
+            date=date,
         )
     return table

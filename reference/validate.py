@@ -15,6 +15,7 @@ from pathlib import Path
 
 from reference.book import Book, identity
 from reference.catalog import Catalog, ChapterFile, read_catalog
+from reference.formulas import CONSTANTS, FUNCTIONS, FormulaError, make_symbol, parse_formula
 from reference.locate import find, line_tokens, matches, pick_occurrence
 from reference.models import check_signature, pick_steps, resolve
 from reference.numbers import NumberFormatError, Printed, parse_number, significant_digits
@@ -64,8 +65,42 @@ def references(claim: Claim) -> list[str]:
 
 
 def parsed(claim: Claim) -> Printed:
-    """The value a claim states: ``means`` where given, else ``printed``, with its sigfigs."""
-    return parse_number(claim.means or claim.printed, sigfigs=claim.sigfigs, exact=claim.exact)
+    """The value a claim states: ``means`` where given, else ``printed``, with its sigfigs; a
+    historical date (a constant with ``date = true``) at the precision of its last non-zero
+    digit (design 2a: "1700" is good to 50 years, "1620" to 5)."""
+    text = claim.means or claim.printed
+    if text is None:
+        raise NumberFormatError(f"{claim.id} states no number (no printed or means)")
+    sigfigs = claim.sigfigs
+    if sigfigs is None and claim.constant is not None and _is_date(claim.constant):
+        digits = significant_digits(text).rstrip("0")
+        sigfigs = max(len(digits), 1)
+    return parse_number(text, sigfigs=sigfigs, exact=claim.exact)
+
+
+def short_exact(text: str, stated: Printed) -> bool:
+    """Whether a ``correct`` value is exact and short (design 2a): a terminating decimal with
+    at most two more decimals than printed ("-0.25" for a printed "-0.5"), or a p/q, root or
+    pi form of at most 8 characters."""
+    try:
+        correct = parse_number(text)
+    except NumberFormatError:
+        return False
+    if correct.exact:
+        return len(text.strip()) <= 8
+    if stated.quantum is None or correct.quantum is None:
+        return False
+    return correct.quantum >= stated.quantum / 100
+
+
+def _editions(key: str) -> set[str]:
+    entry = constants().get(key)
+    return {e.edition for e in entry.older} if entry is not None else set()
+
+
+def _is_date(key: str) -> bool:
+    entry = constants().get(key)
+    return entry is not None and entry.date
 
 
 def superscript_ok(printed: str, means: str) -> bool:
@@ -76,6 +111,9 @@ def superscript_ok(printed: str, means: str) -> bool:
     """
     target = parse_number(means).value
     s = normalize(printed).strip()
+    if scale := re.search(r" ?E([-+]?\d+)$", s):  # "6.282 E6": a power of ten after the split
+        target /= Fraction(10) ** int(scale[1])
+        s = s[: scale.start()]
     sign = -1 if s.startswith("-") else 1
     s = s.lstrip("-+")
     mantissa = Fraction(1)
@@ -134,20 +172,94 @@ class _Checker:
             add("line", f"{c.line} is outside the chapter's lines [{lo}, {hi}]")
         if c.line_end is not None and not c.line < c.line_end <= hi:
             add("line_end", f"{c.line_end} must be after line {c.line} and inside the chapter")
-        self.check_values(f, c)
+        if c.kind == "formula":
+            self.check_formula(f, c)
+        else:
+            self.check_values(f, c)
         self.check_kind(f, c)
         self.check_model(f, c)
         self.check_relation(f, c)
+        self.check_error_fields(f, c)
         if self.book is not None and lo <= c.line <= hi:
             self.check_text(f, c)
 
+    def check_formula(self, f: ChapterFile, c: Claim) -> None:
+        """A formula claim (design 2a): a readable expression over declared symbols, a model
+        for the correct formula, a readable ``correct``, the tokens it covers."""
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        symbols = {}
+        for name, spec in c.symbols.items():
+            if not name.isidentifier() or name in CONSTANTS or name in FUNCTIONS:
+                add(f"symbols.{name}", "a symbol is a plain name, not a constant or a function")
+            if spec.domain is not None and not spec.domain[0] < spec.domain[1]:
+                add(f"symbols.{name}.domain", f"{spec.domain} is not an interval lo < hi")
+            symbols[name] = make_symbol(name, spec.model_dump(exclude_none=True))
+        if c.expression is None:
+            add("expression", "a formula claim states the book's formula in 'expression'")
+        else:
+            try:
+                parse_formula(c.expression, symbols)
+            except FormulaError as err:
+                add("expression", str(err))
+        if c.model is None:
+            add("model", "a formula claim needs the model of the correct formula")
+        if c.correct is not None:
+            try:
+                parse_formula(c.correct, symbols)
+            except FormulaError as err:
+                add("correct", str(err))
+        for field in ("means", "garble", "sigfigs", "rounding", "constant"):
+            if getattr(c, field) not in (None, False):
+                add(field, "does not apply to a formula claim")
+        if c.unit != "1" or c.relation != "=":
+            add("unit" if c.unit != "1" else "relation", "a formula has no unit and relation =")
+        if c.printed is not None and not c.tokens:
+            add("tokens", "list the tokens the formula covers (printed alone is not enough)")
+        if c.expect not in ("verified", "erratum"):
+            add("expect", "a formula is verified or an erratum")
+
+    def check_error_fields(self, f: ChapterFile, c: Claim) -> None:
+        """``same_error``, ``summary``, ``edition``, ``tokens`` and a missing ``printed``."""
+        add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
+        if c.tokens and c.kind != "formula":
+            add("tokens", "only a formula claim lists the tokens it covers")
+        if c.printed is None and c.kind != "formula" and (c.expect != "erratum" or not c.means):
+            add(
+                "printed",
+                "required, except for a formula or an erratum with no token (then 'means' "
+                "gives the value the text states)",
+            )
+        if c.same_error is not None:
+            if c.expect != "erratum":
+                add("same_error", "only an erratum is part of an error")
+            if c.summary is not None:
+                add("summary", "the error's first claim carries the summary, not this one")
+        elif c.expect == "erratum" and c.summary is None and not self.restates_erratum(c):
+            add("summary", "the first claim of an error needs a one-sentence summary")
+        if c.summary is not None and c.expect != "erratum":
+            add("summary", "only an erratum carries a summary")
+        if c.expect == "dated":
+            if c.edition is None:
+                add("edition", "a dated claim names the edition it matches")
+            elif c.kind != "constant" and not c.restates:
+                add("expect", "only a claim judged through a constant can be dated")
+            elif c.constant is not None and c.edition not in _editions(c.constant):
+                add("edition", f"{c.edition!r} is no older edition of {c.constant!r}")
+        elif c.edition is not None:
+            add("edition", "only a dated claim names an edition")
+
+    def restates_erratum(self, c: Claim) -> bool:
+        restated = self.catalog.by_id().get(c.restates or "")
+        return restated is not None and restated.expect == "erratum"
+
     def check_values(self, f: ChapterFile, c: Claim) -> None:
         add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
-        try:
-            parse_number(c.printed)
-        except NumberFormatError as err:
-            if c.means is None:
-                add("printed", f"{err}; a garbled number needs 'means' and 'garble'")
+        if c.printed is not None:
+            try:
+                parse_number(c.printed)
+            except NumberFormatError as err:
+                if c.means is None:
+                    add("printed", f"{err}; a garbled number needs 'means' and 'garble'")
         if (c.means is None) != (c.garble is None):
             add("garble" if c.means else "means", "'means' and 'garble' go together")
         if c.means is not None:
@@ -158,7 +270,11 @@ class _Checker:
             except NumberFormatError as err:
                 add("means", str(err))
             else:
-                if c.garble == "superscript" and not superscript_ok(c.printed, c.means):
+                if (
+                    c.garble == "superscript"
+                    and c.printed is not None
+                    and not superscript_ok(c.printed, c.means)
+                ):
                     add(
                         "means",
                         f"no split of {c.printed!r} into base and exponent gives {c.means!r}",
@@ -174,7 +290,7 @@ class _Checker:
                 add("sigfigs", str(err))
         if c.unit not in NO_CONVERSION and c.unit not in units():
             add("unit", f"unknown unit {c.unit!r} (see reference/units.toml)")
-        mark = c.printed.strip()[-1:]
+        mark = (c.printed or "").strip()[-1:]
         if mark == "%" and c.unit != "percent":
             add("unit", 'a printed percent needs unit = "percent"')
         if mark == "°" and c.unit != "deg":
@@ -221,11 +337,14 @@ class _Checker:
                 add("diagnosis", "an erratum needs a diagnosis { kind, note }")
             if c.correct is not None:
                 self.check_correct(f, c)
+        elif c.expect == "dated":  # today's value and a diagnosis are allowed
+            if c.correct is not None:
+                self.check_correct(f, c)
         else:
             if c.correct is not None:
-                add("correct", "only an erratum has a correct value")
+                add("correct", "only an erratum or a dated value has a correct value")
             if c.diagnosis is not None:
-                add("diagnosis", "only an erratum has a diagnosis")
+                add("diagnosis", "only an erratum or a dated value has a diagnosis")
         if c.restates is not None and (c.model or c.args):
             add("restates", "a restatement is not modelled again: no model or args")
         if c.monotonic is not None and c.model is None:
@@ -233,6 +352,14 @@ class _Checker:
 
     def check_correct(self, f: ChapterFile, c: Claim) -> None:
         assert c.correct is not None
+        if c.kind == "formula":
+            return  # read by check_formula
+        if c.constant is not None and _is_date(c.constant):
+            try:
+                parse_number(c.correct)
+            except NumberFormatError as err:
+                self.add(f, c.id, "correct", str(err))
+            return  # a date's correction is the year its source gives
         try:
             correct = parse_number(c.correct, sigfigs=c.sigfigs)
             stated = parsed(c)
@@ -241,14 +368,18 @@ class _Checker:
             return
         same_decimals = correct.quantum == stated.quantum
         same_figures = len(significant_digits(c.correct)) == len(
-            significant_digits(c.means or c.printed)
+            significant_digits(c.means or c.printed or "")
         )
-        if not stated.exact and not (same_decimals or same_figures):
+        if not stated.exact and not (
+            same_decimals or same_figures or short_exact(c.correct, stated)
+        ):
             self.add(
                 f,
                 c.id,
                 "correct",
-                "write it to the printed number of decimals or of significant figures",
+                "write it to the printed number of decimals or of significant figures, or exact "
+                "where short (two more decimals at most, or a p/q, root or pi form of 8 "
+                "characters at most)",
             )
 
     def check_model(self, f: ChapterFile, c: Claim) -> None:
@@ -303,6 +434,16 @@ class _Checker:
         if count != 1:
             where = "is not on" if count == 0 else f"occurs {count} times on"
             add("quote", f"{where} line {c.line}: {text.strip()[:80]!r}")
+            return
+        lo, hi = f.meta.lines
+        for i, tok in enumerate(c.tokens):
+            if not lo <= tok.line <= hi:
+                add(f"tokens[{i}]", f"line {tok.line} is outside the chapter")
+                continue
+            match, why = find(self.book, tok.line, tok.token, tok.occurrence)
+            if match is None:
+                add(f"tokens[{i}]", f"{tok.token!r} on line {tok.line} {why}")
+        if c.printed is None:
             return
         q_start = text.index(c.quote)
         q_end = q_start + len(c.quote)

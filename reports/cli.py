@@ -24,6 +24,7 @@ from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
 from reports import bangcheck_version
+from reports.errata_sheet import verdict_summary
 from reports.invariants import (
     CACHE_DIR,
     PROPERTIES_FILE,
@@ -129,7 +130,8 @@ def _claims(args: argparse.Namespace) -> int:
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
     _print_claims(evaluation, args.json, args.verdict)
     counts = evaluation.verdict_counts()
-    summary = ", ".join(f"{v} {counts[v]}" for v in VERDICTS if counts[v])
+    errors = len(evaluation.errors())
+    summary = verdict_summary(((v, counts[v]) for v in VERDICTS), errors)
     print(f"bangcheck: {len(evaluation)} claims: {summary or 'none'}", file=sys.stderr)
     failing = _failing(evaluation, args.strict)
     if failing:
@@ -303,7 +305,8 @@ def _report(args: argparse.Namespace) -> int:
     files = build_report(evaluation, result, catalog, properties)
     write_report_dir(out, files)
     print(
-        f"bangcheck: wrote {shown(out / 'index.html')}, errata.csv and claims.json", file=sys.stderr
+        f"bangcheck: wrote {shown(out / 'index.html')}, errata.csv, errata.md and claims.json",
+        file=sys.stderr,
     )
     print(out / "index.html")
     failing = _failing(evaluation, strict=False)

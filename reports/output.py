@@ -8,31 +8,17 @@ from __future__ import annotations
 import csv
 import io
 import json
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
-ERRATA_COLUMNS = (
-    "id",
-    "chapter",
-    "line",
-    "quantity",
-    "printed",
-    "correct",
-    "model_value",
-    "diagnosis_kind",
-    "diagnosis_auto",
-    "note",
-    "quote",
-)
 
-
-def errata_csv(rows: Iterable[Mapping[str, Any]]) -> str:
-    """The errata as CSV text (header ``ERRATA_COLUMNS``), rows in catalog order."""
+def csv_text(columns: Sequence[str], rows: Iterable[Mapping[str, Any]]) -> str:
+    """Rows as CSV text with a header of ``columns`` (missing values empty)."""
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(ERRATA_COLUMNS)
+    writer.writerow(columns)
     for row in rows:
-        writer.writerow(["" if row.get(c) is None else row[c] for c in ERRATA_COLUMNS])
+        writer.writerow(["" if row.get(c) is None else row[c] for c in columns])
     return buffer.getvalue()
 
 

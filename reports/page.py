@@ -20,8 +20,9 @@ from reference.evaluation import EvaluatedClaim, Evaluation
 from reference.locate import find
 from reference.scan import ScanResult
 from reports import bangcheck_version
+from reports.errata_sheet import ERRATA_COLUMNS, errata_counts, errata_markdown, error_rows
 from reports.figures import RenderedFigure, render_all, verdict_chart
-from reports.output import claims_json, errata_csv
+from reports.output import claims_json, csv_text
 
 EXAMPLES_PER_RULE = 3
 
@@ -68,30 +69,6 @@ def model_call(claim: EvaluatedClaim, values: dict[str, EvaluatedClaim]) -> str:
     extra = ", ".join(f"{k}={v!r}" for k, v in claim.assumptions.items())
     call = f"{claim.model}({', '.join(x for x in (args, extra) if x)})"
     return f"{call}.{claim.pick}" if claim.pick else call
-
-
-def errata_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
-    rows = []
-    for c in evaluation:
-        if c.verdict != "erratum":
-            continue
-        diagnosis = c.diagnosis or {}
-        rows.append(
-            {
-                "id": c.id,
-                "chapter": c.chapter,
-                "line": c.line,
-                "quantity": c.quantity,
-                "printed": c.printed,
-                "correct": c.correct,
-                "model_value": c.model_value,
-                "diagnosis_kind": diagnosis.get("kind"),
-                "diagnosis_auto": diagnosis.get("auto"),
-                "note": diagnosis.get("note"),
-                "quote": c.quote,
-            }
-        )
-    return rows
 
 
 def _coverage(scan: ScanResult) -> list[dict[str, Any]]:
@@ -144,6 +121,7 @@ def report_meta(evaluation: Evaluation, scan: ScanResult) -> dict[str, Any]:
         "claims": len(evaluation),
         "verdicts": {v: counts[v] for v in VERDICTS},
         "errata": counts["erratum"],
+        "errors": errata_counts(evaluation)[1],
         "coverage": {row["chapter"]: row for row in _coverage(scan)},
     }
 
@@ -265,7 +243,8 @@ def build_report(
     figures = render_all(evaluation, figure_workers)
     return {
         "index.html": render_page(evaluation, scan, catalog, properties, figures),
-        "errata.csv": errata_csv(errata_rows(evaluation)),
+        "errata.csv": csv_text(ERRATA_COLUMNS, error_rows(evaluation)),
+        "errata.md": errata_markdown(evaluation),
         "claims.json": claims_json(
             report_meta(evaluation, scan), [c.to_json() for c in evaluation]
         ),

@@ -1,0 +1,186 @@
+"""The errata as a publisher wants them: one row of ``errata.csv`` per error of the book, and
+``errata.md``, the errata sheet in book order with the constants to update after it (design
+2a). Both are byte-identical across runs on the same inputs.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+from reference.errata import Error
+from reference.evaluation import EvaluatedClaim, Evaluation
+from reference.formulas import unicode_formula
+from reference.tables import constants
+
+# The columns of design section 4, then those revision 2 appends (fixed: extend, never rename)
+ERRATA_COLUMNS = (
+    "id",
+    "chapter",
+    "line",
+    "quantity",
+    "printed",
+    "correct",
+    "model_value",
+    "diagnosis_kind",
+    "diagnosis_auto",
+    "note",
+    "quote",
+    "lines",
+    "ids",
+    "class",
+    "section",
+    "equation",
+    "figure",
+    "summary",
+)
+
+
+def _members(evaluation: Evaluation, error: Error) -> list[EvaluatedClaim]:
+    evaluated = evaluation.by_id()
+    return [evaluated[c.id] for c in error.claims if c.id in evaluated]
+
+
+def error_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
+    """One row per error: its first claim's id, line, quantity and diagnosis; every claim's
+    printed and correct value joined with "; " in line order; its class and location."""
+    rows = []
+    for error in evaluation.errors():
+        members = _members(evaluation, error)
+        first = members[0]
+        diagnosis = first.diagnosis or {}
+        rows.append(
+            {
+                "id": first.id,
+                "chapter": error.chapter,
+                "line": first.line,
+                "quantity": first.quantity,
+                "printed": "; ".join(m.printed or m.means or "" for m in members),
+                "correct": "; ".join(m.correct or "" for m in members),
+                "model_value": first.model_value,
+                "diagnosis_kind": diagnosis.get("kind"),
+                "diagnosis_auto": diagnosis.get("auto"),
+                "note": diagnosis.get("note"),
+                "quote": first.quote,
+                "lines": "; ".join(str(m.line) for m in members),
+                "ids": "; ".join(m.id for m in members),
+                "class": error.error_class,
+                "section": error.section,
+                "equation": error.equation,
+                "figure": error.figure,
+                "summary": error.summary,
+            }
+        )
+    return rows
+
+
+def _correction(claim: EvaluatedClaim) -> tuple[str, str]:
+    """("for" the quoted span, "read" the correction) of one claim, as the book writes it."""
+    correct = claim.correct or ""
+    if claim.kind == "formula":
+        return claim.quote, unicode_formula(correct)
+    printed = claim.printed
+    if printed and printed in claim.quote and correct:
+        return claim.quote, claim.quote.replace(printed, correct, 1)
+    return claim.quote, correct
+
+
+def _where(
+    chapter: str, line: int, section: str | None, equation: str | None, figure: str | None
+) -> str:
+    parts = [f"Chapter {chapter}", f"line {line}"]
+    if section:
+        parts.append(f"“{section}”")
+    if equation:
+        parts.append(f"eq. {equation}")
+    if figure:
+        parts.append(figure)
+    return ", ".join(parts)
+
+
+def _source(key: str | None) -> str | None:
+    entry = constants().get(key or "")
+    return None if entry is None else f"{entry.source} ({entry.edition})"
+
+
+def _entry(evaluation: Evaluation, error: Error) -> list[str]:
+    members = _members(evaluation, error)
+    first = members[0]
+    where = _where(error.chapter, first.line, error.section, error.equation, error.figure)
+    fixes = "; ".join(
+        f"for “{before}” read “{after}”" for before, after in map(_correction, members)
+    )
+    lines = [f"- **{where}**: {fixes}."]
+    if error.summary:
+        lines.append(f"  {error.summary}")
+    source = _source(error.first.constant)
+    if source:
+        lines.append(f"  Source: {source}.")
+    return lines
+
+
+def errata_markdown(evaluation: Evaluation) -> str:
+    """``errata.md``: every error in book order, by chapter (where, "for ... read ...", the
+    summary, the source of a constant or date), then the dated constants to update."""
+    book = evaluation.book.identity
+    errors = evaluation.errors()
+    claims = sum(len(e.claims) for e in errors)
+    out = [
+        f"# Errata: {book.title}",
+        "",
+        f"{len(errors)} errors ({claims} printed values or formulas), in book order. Lines are "
+        "those of the text the catalog cites (sha256 "
+        f"`{book.sha256[:16]}…`); sections are the book's headings.",
+        "",
+    ]
+    titles = {c.key: c.title for c in book.chapters}
+    chapter = None
+    for error in errors:
+        if error.chapter != chapter:
+            chapter = error.chapter
+            out += [f"## Chapter {chapter}: {titles.get(chapter, '')}", ""]
+        out += _entry(evaluation, error)
+    out += ["", "## Constants to update", ""]
+    dated = [c for c in evaluation if c.verdict == "dated"]
+    if not dated:
+        out.append("None.")
+    for c in dated:
+        out += _dated_entry(evaluation, c)
+    return "\n".join(out).rstrip("\n") + "\n"
+
+
+def _dated_entry(evaluation: Evaluation, c: EvaluatedClaim) -> list[str]:
+    claim = evaluation.catalog.by_id()[c.id]
+    key = claim.constant
+    entry = constants().get(key or "")
+    section = c.section
+    where = _where(c.chapter, c.line, section, c.equation, c.figure)
+    today = f"{entry.value:g} ({entry.edition})" if entry is not None else "today's value"
+    lines = [
+        f"- **{where}**: {c.quantity}: the book's {c.printed} is the {c.matched_edition} value; "
+        f"today it is {c.correct or today}."
+    ]
+    if entry is not None:
+        older = next((o for o in entry.older if o.edition == c.matched_edition), None)
+        if older is not None and older.source:
+            lines.append(f"  Then: {older.source}.")
+        lines.append(f"  Now: {entry.source}.")
+    return lines
+
+
+def errata_counts(evaluation: Evaluation) -> tuple[int, int]:
+    """(erratum claims, errors): "erratum 45 (37 errors)"."""
+    return sum(c.verdict == "erratum" for c in evaluation), len(evaluation.errors())
+
+
+def verdict_summary(counts: Iterable[tuple[str, int]], errors: int | None) -> str:
+    """The verdict counts as the CLI and pytest print them, errata with their errors."""
+    parts = []
+    for verdict, n in counts:
+        if not n:
+            continue
+        if verdict == "erratum" and errors is not None:
+            parts.append(f"erratum {n} ({errors} errors)")
+        else:
+            parts.append(f"{verdict} {n}")
+    return ", ".join(parts)
