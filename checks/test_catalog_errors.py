@@ -125,7 +125,18 @@ def test_the_base_catalog_is_valid(tmp_path: Path, book: Book) -> None:
         ),
         ("v_drop =", "drop_speed =", "ch08.t.v3", "args"),
         ('expect = "verified"', 'expect = "unmodeled"', "ch08.t.v3", "expect"),
-        ('expect = "verified"', 'expect = "erratum"\ncorrect = "3.62"', "ch08.t.v3", "diagnosis"),
+        (
+            'expect = "verified"',
+            'expect = "erratum"\ncorrect = "3.62"\nsummary = "s"',
+            "ch08.t.v3",
+            "diagnosis",
+        ),
+        (
+            'expect = "verified"',
+            'expect = "erratum"\ncorrect = "3.62"\ndiagnosis = { kind = "other", note = "n" }',
+            "ch08.t.v3",
+            "summary",
+        ),
         ('pick = "velocities[2]"', 'pick = "velocities[two]"', "ch08.t.v3", "pick"),
         ('expect = "verified"', 'expect = "verified"\nunit = "furlong"', "ch08.t.v3", "unit"),
         (
@@ -175,7 +186,8 @@ def test_an_unreferenced_given_is_an_error(tmp_path: Path, book: Book) -> None:
 def test_an_erratum_needs_the_printed_precision(tmp_path: Path, book: Book) -> None:
     text = (META + GIVENS + V3).replace(
         'expect = "verified"',
-        'expect = "erratum"\ncorrect = "3.615"\ndiagnosis = { kind = "arithmetic", note = "test" }',
+        'expect = "erratum"\ncorrect = "3.61538"\nsummary = "s"\n'
+        'diagnosis = { kind = "arithmetic", note = "test" }',
     )
     found = one_problem(tmp_path, book, text)
     assert (found.id, found.field) == ("ch08.t.v3", "correct")

@@ -200,21 +200,31 @@ def test_an_exact_given_makes_no_interval(book: Book, monkeypatch: pytest.Monkey
     assert (result.interval, result.verdict, result.correct_agrees) == (None, "erratum", True)
 
 
-def test_an_older_edition_of_a_constant_is_diagnosed_dated(book: Book) -> None:
+def test_an_older_edition_of_a_constant_is_dated(book: Book) -> None:
+    """6.672E-11 misses today's G and matches the CODATA 1973 edition: dated, naming it; the
+    claim passes only when it names that edition."""
     c = claim(
         id="ch08.g",
         printed="6.672E-11",
         kind="constant",
-        expect="erratum",
+        expect="dated",
+        edition="CODATA 1973",
         constant="gravitational-constant",
         unit="1",
         correct="6.674E-11",
-        diagnosis={"kind": "dated", "note": "n"},
     )
     result = run(book, c)["ch08.g"]
-    assert result.verdict == "erratum"
+    assert (result.verdict, result.matched_edition, result.passed) == (
+        "dated",
+        "CODATA 1973",
+        True,
+    )
     assert result.diagnosis is not None
     assert (result.diagnosis["auto"] or "").startswith("dated: matches CODATA 1973")
+    wrong = run(book, c.model_copy(update={"edition": "CODATA 2010"}))["ch08.g"]
+    assert (wrong.verdict, wrong.passed) == ("dated", False)
+    today = run(book, c.model_copy(update={"printed": "6.674E-11"}))["ch08.g"]
+    assert today.verdict == "verified"
 
 
 def test_a_model_that_raises_names_the_claim(book: Book, monkeypatch: pytest.MonkeyPatch) -> None:

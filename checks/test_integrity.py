@@ -67,6 +67,9 @@ def test_expected_errata_really_disagree_with_the_model(evaluation: Evaluation) 
     for c in evaluation:
         if c.expect != "erratum":
             continue
+        if c.kind == "formula":
+            assert c.verdict == "erratum", c.id  # the book's formula differs at generic points
+            continue
         assert c.model_value is not None, c.id
         if c.relation == "=":
             ctx = evaluation.contexts[c.id]

@@ -353,7 +353,7 @@ def test_the_command_writes_the_manifest_and_reads_no_properties_in_its_output(
     code, _ = report(capsys, book, tmp_path / "out")
     assert code == 0
     names = sorted(os.listdir(tmp_path / "out"))
-    assert names == sorted([MANIFEST, "index.html", "errata.csv", "claims.json"])
+    assert names == sorted([MANIFEST, "index.html", "errata.csv", "errata.md", "claims.json"])
     assert sorted(os.listdir(tmp_path)) == ["out"]
 
 

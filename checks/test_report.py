@@ -26,11 +26,12 @@ from reference.evaluation import Evaluation, evaluate_catalog
 from reference.scan import ScanResult, scan
 from reports.background import BackgroundReport, BackgroundReportError
 from reports.cli import main
+from reports.errata_sheet import ERRATA_COLUMNS, errata_markdown, error_rows
 from reports.figures import registered
 from reports.invariants import default_properties_path, read_properties, write_properties
 from reports.outdir import MANIFEST, manifest_names
-from reports.output import ERRATA_COLUMNS, claims_json, errata_csv
-from reports.page import build_report, errata_rows, render_page, report_meta
+from reports.output import claims_json, csv_text
+from reports.page import build_report, render_page, report_meta
 
 # under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
 # one group, run by one worker, which evaluates the catalog, scans the book and builds the
@@ -150,10 +151,10 @@ def test_the_command_writes_a_report_of_one_chapter(
     assert '<figure id="figure-tower-100-30-10">' not in html
 
 
-def test_the_three_files_are_written(report_dir: Path) -> None:
+def test_the_report_files_are_written(report_dir: Path) -> None:
     names = {p.name for p in report_dir.iterdir()} - {"screenshot.png"}  # the browser test's
-    assert sorted(names) == [MANIFEST, "claims.json", "errata.csv", "index.html"]
-    assert manifest_names(report_dir) == {"claims.json", "errata.csv", "index.html"}
+    assert sorted(names) == [MANIFEST, "claims.json", "errata.csv", "errata.md", "index.html"]
+    assert manifest_names(report_dir) == {"claims.json", "errata.csv", "errata.md", "index.html"}
 
 
 def test_the_page_parses_and_nests(page: Page) -> None:
@@ -176,12 +177,37 @@ def test_sections_come_in_order(page: Page) -> None:
 
 
 def test_errata_counts_agree(report_dir: Path, page: Page, evaluation: Evaluation) -> None:
+    """errata.csv has one row per error; claims.json counts erratum claims and errors; the
+    page shows each erratum claim."""
     expected = sum(c.verdict == "erratum" for c in evaluation)
+    errors = evaluation.errors()
     rows = list(csv.DictReader(io.StringIO((report_dir / "errata.csv").read_text("utf-8"))))
     data = json.loads((report_dir / "claims.json").read_text("utf-8"))
     in_json = sum(c["verdict"] == "erratum" for c in data["claims"])
-    assert int(page.errata_count) == page.errata_articles == len(rows) == in_json == expected
+    assert int(page.errata_count) == page.errata_articles == in_json == expected
     assert data["meta"]["errata"] == expected
+    assert data["meta"]["errors"] == len(rows) == len(errors) < expected
+    assert [r["id"] for r in rows] == [e.first.id for e in errors]
+    ids = [i for r in rows for i in r["ids"].split("; ")]
+    assert sorted(ids) == sorted(c.id for c in evaluation if c.verdict == "erratum")
+
+
+def test_errata_md_lists_every_error_in_book_order(
+    report_dir: Path, evaluation: Evaluation
+) -> None:
+    """errata.md and errata.csv agree: one entry per error, in the same (book) order, each
+    with its summary; the dated constants come after them."""
+    text = (report_dir / "errata.md").read_text("utf-8")
+    errors_part, _, dated_part = text.partition("## Constants to update")
+    entries = [line for line in errors_part.splitlines() if line.startswith("- **")]
+    rows = list(csv.DictReader(io.StringIO((report_dir / "errata.csv").read_text("utf-8"))))
+    assert len(entries) == len(rows)
+    for entry, row in zip(entries, rows, strict=True):
+        assert f"line {row['line']}" in entry
+    for row in rows:
+        assert row["summary"]
+        assert row["summary"] in errors_part
+    assert dated_part.count("- **") == sum(c.verdict == "dated" for c in evaluation)
 
 
 def test_csv_columns_and_json_fields(report_dir: Path, evaluation: Evaluation) -> None:
@@ -202,7 +228,8 @@ def test_a_fresh_run_gives_identical_csv_and_json(
     result = scan(book, catalog, tuple(c.key for c in book.identity.chapters))
     files = {
         "claims.json": claims_json(report_meta(again, result), [c.to_json() for c in again]),
-        "errata.csv": errata_csv(errata_rows(again)),
+        "errata.csv": csv_text(ERRATA_COLUMNS, error_rows(again)),
+        "errata.md": errata_markdown(again),
     }
     for name, text in files.items():
         assert text.encode("utf-8") == (report_dir / name).read_bytes(), name

@@ -38,7 +38,7 @@ from reference.diagnose import diagnose
 from reference.errata import Error, errors
 from reference.formulas import FormulaError, compare, generic_points, make_symbol, parse_formula
 from reference.models import PickError, follow, is_monotonic, resolve
-from reference.numbers import EXACT_ULPS, Printed, parse_number
+from reference.numbers import EXACT_ULPS, Printed, parse_number, significant_digits
 from reference.power import (
     Outcome,
     PowerReport,
@@ -533,7 +533,11 @@ class _Evaluator:
             correct_agrees = formula.correct_agrees
         elif claim.correct is not None and model_value is not None:
             correct = parse_number(claim.correct, sigfigs=claim.sigfigs)
-            correct_agrees = inside(abs(_real(model_value) - correct.value), correct.tolerance)
+            tolerance = correct.tolerance
+            if printed is not None and _finer(claim.correct, correct, printed):
+                # more decimals and more figures than printed: the exact value (design 2a)
+                tolerance = Fraction(EXACT_ULPS * math.ulp(float(correct.value) or 1e-300))
+            correct_agrees = inside(abs(_real(model_value) - correct.value), tolerance)
         diagnosis = None
         if judgement.verdict in ("erratum", "dated") or claim.expect in ("erratum", "dated"):
             if (
@@ -615,6 +619,15 @@ class _Evaluator:
             section=None,
             catches=None,
         )
+
+
+def _finer(text: str, correct: Printed, printed: Printed) -> bool:
+    """Whether a ``correct`` value has more decimals and more significant figures than the
+    printed one: then it is written exact, not rounded."""
+    if correct.quantum is None or printed.quantum is None:
+        return False
+    figures = len(significant_digits(text)) > len(significant_digits(printed.text))
+    return correct.quantum < printed.quantum and figures
 
 
 def _real(value: Any) -> Fraction:

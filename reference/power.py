@@ -287,12 +287,11 @@ def _reason(claim: Claim, printed: Printed, ctx: Context, judgement: Judgement) 
         return "input-interval" if judgement.reason == "input-rounding" else "declared-truncation"
     value = abs(ctx.model) if printed.absolute else ctx.model
     diff = abs(value - printed.value)
-    if ctx.extra and diff > printed.tolerance * (1 + SLACK):
-        return "constant-uncertainty"
-    if claim.sigfigs is not None:
-        full = parse_number(printed.text, exact=claim.exact)
-        if diff > full.tolerance * (1 + SLACK):
-            return "declared-precision"
+    if ctx.extra:
+        return "constant-uncertainty"  # the value itself passes within the datum's uncertainty
+    full = parse_number(printed.text, exact=claim.exact)
+    if printed.tolerance > full.tolerance:
+        return "declared-precision"  # sigfigs, or a date read at its last non-zero digit
     if diff >= printed.tolerance * (1 - SLACK):
         return "tie"
     return None

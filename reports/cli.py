@@ -119,7 +119,8 @@ def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) ->
         mark = "" if c.passed else "   <-- differs"
         reason = f" [{c.rounding_reason}]" if c.rounding_reason else ""
         print(
-            f"{c.id:<{width}}  {c.line:>5}  {c.printed:>12}  {_fmt(c.model_value):>16}  "
+            f"{c.id:<{width}}  {c.line:>5}  {c.printed or c.expression or '-':>12}  "
+            f"{_fmt(c.model_value if c.kind != 'formula' else c.model_expression):>16}  "
             f"{c.verdict}{reason} ({c.expect}){mark}"
         )
 

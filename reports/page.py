@@ -40,7 +40,7 @@ def quote_parts(book: Book, claim: EvaluatedClaim) -> Quote:
     """The claim's quote with the printed number at its occurrence picked out."""
     text = book.line(claim.line)
     start = text.find(claim.quote)
-    if start < 0:
+    if start < 0 or claim.printed is None:
         return Quote(claim.quote, "", "")
     match, _ = find(book, claim.line, claim.printed, claim.occurrence)
     if match is None or not start <= match.start <= match.end <= start + len(claim.quote):
