@@ -21,7 +21,8 @@ from reference.schema import Claim
 from reference.tables import constants
 
 ERROR_CLASSES = ("formula", "sign", "date", "constant", "inconsistent", "value")
-_TAG = re.compile(r"(?<![\w)\]])\(((?:1[0-2]|[1-9]|1\.A)\. ?\d{1,2}[a-z]?)\)")
+# an equation's own tag ends its line ("... = 250   (2.2)"); a tag inside prose is a reference
+_TAG = re.compile(r"(?<![\w)\]])\(((?:1[0-2]|[1-9]|1\.A)\. ?\d{1,2}[a-z]?)\)\s*$")
 
 
 @dataclass(frozen=True)
@@ -90,9 +91,14 @@ def errors(
     groups: dict[str, list[tuple[Claim, str]]] = {}
     for claim, chapter in claims:
         groups.setdefault(error_of(claim, by_id), []).append((claim, chapter))
+
+    def place(member: tuple[Claim, str]) -> tuple[int, int, str]:
+        claim = member[0]
+        return claim.line, max(lines[claim.line - 1].find(claim.quote), 0), claim.id
+
     out = []
     for members in groups.values():
-        members.sort(key=lambda m: (m[0].line, m[0].id))
+        members.sort(key=place)
         first, chapter = members[0]
         head = by_id.get(error_of(first, by_id), first)
         section = identity.section_of(first.line)

@@ -5,6 +5,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from typing import Any
 
@@ -12,6 +13,8 @@ from reference.errata import Error
 from reference.evaluation import EvaluatedClaim, Evaluation
 from reference.formulas import unicode_formula
 from reference.tables import constants
+
+_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
 # The columns of design section 4, then those revision 2 appends (fixed: extend, never rename)
 ERRATA_COLUMNS = (
@@ -74,15 +77,27 @@ def error_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
     return rows
 
 
+def _pretty(number: str) -> str:
+    """A ``means`` or ``correct`` string as the book prints it: "10^40" -> "10⁴⁰"."""
+    return (
+        unicode_formula(number)
+        if "^" not in number
+        else re.sub(r"\^(-?\d+)", lambda m: m[1].translate(_SUPERSCRIPTS), number)
+    )
+
+
 def _correction(claim: EvaluatedClaim) -> tuple[str, str]:
-    """("for" the quoted span, "read" the correction) of one claim, as the book writes it."""
+    """("for" the quoted span, "read" the correction) of one claim, as the book writes it: a
+    garbled number shown as it stands in the book (its ``means``)."""
     correct = claim.correct or ""
     if claim.kind == "formula":
         return claim.quote, unicode_formula(correct)
-    printed = claim.printed
-    if printed and printed in claim.quote and correct:
-        return claim.quote, claim.quote.replace(printed, correct, 1)
-    return claim.quote, correct
+    printed, quote = claim.printed, claim.quote
+    if printed and printed in quote:
+        shown = _pretty(claim.means) if claim.means else printed
+        before = quote.replace(printed, shown, 1)
+        return before, quote.replace(printed, _pretty(correct), 1) if correct else correct
+    return quote, correct
 
 
 def _where(
@@ -138,7 +153,7 @@ def errata_markdown(evaluation: Evaluation) -> str:
     for error in errors:
         if error.chapter != chapter:
             chapter = error.chapter
-            out += [f"## Chapter {chapter}: {titles.get(chapter, '')}", ""]
+            out += ["", f"## Chapter {chapter}: {titles.get(chapter, '')}", ""]
         out += _entry(evaluation, error)
     out += ["", "## Constants to update", ""]
     dated = [c for c in evaluation if c.verdict == "dated"]
