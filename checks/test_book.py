@@ -42,6 +42,20 @@ def test_the_shipped_line_digests_are_the_books(book: Book) -> None:
 
 
 @pytest.mark.integrity
+def test_section_headings_are_on_their_lines(book: Book) -> None:
+    """The section table of book.toml (the errata's locations) against the text: each heading
+    is on its line, in book order, and every chapter opens with one."""
+    sections = identity().sections
+    assert len(sections) > 150
+    assert [s.line for s in sections] == sorted({s.line for s in sections})
+    for section in sections:
+        assert section.heading in book.line(section.line), (section.line, section.heading)
+    starts = {s.line for s in sections}
+    assert all(c.start in starts for c in identity().chapters if c.key != "0")
+    assert identity().section_of(6562).heading == "Geometric properties of N-stage collisions"
+
+
+@pytest.mark.integrity
 def test_chapter_starts_are_their_headings(book: Book) -> None:
     for chapter in identity().chapters:
         first = book.line(chapter.start).strip()

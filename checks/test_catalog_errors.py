@@ -183,6 +183,48 @@ def test_an_unreferenced_given_is_an_error(tmp_path: Path, book: Book) -> None:
     ]
 
 
+ERRATUM = 'expect = "erratum"\ncorrect = "3.62"\ndiagnosis = { kind = "other", note = "n" }\n'
+
+
+@pytest.mark.parametrize(
+    ("extra", "field"),
+    [
+        ('summary = "s"\nsame_error = "ch08.t.m1"', "summary"),
+        ('same_error = "ch08.t.nope"', "same_error"),
+        ('same_error = "ch08.t.m1"', "same_error"),
+        ('summary = "s"\nedition = "CODATA 1973"', "edition"),
+    ],
+)
+def test_error_fields(tmp_path: Path, book: Book, extra: str, field: str) -> None:
+    """summary on the first claim only; same_error names another erratum; edition only on a
+    dated claim."""
+    text = (META + GIVENS + V3).replace('expect = "verified"', ERRATUM + extra)
+    found = problems_of(tmp_path, book, text)
+    assert ("ch08.t.v3", field) in [(p.id, p.field) for p in found], found
+
+
+def test_a_dated_claim_names_an_edition_of_its_constant(tmp_path: Path, book: Book) -> None:
+    dated = """
+[[claim]]
+id = "ch08.t.g"
+line = 6558
+quote = "m1=100"
+printed = "100"
+quantity = "a constant"
+kind = "constant"
+unit = "1"
+constant = "gravitational-constant"
+expect = "dated"
+"""
+    found = problems_of(tmp_path, book, META + GIVENS + V3 + dated)
+    assert [(p.id, p.field) for p in found] == [("ch08.t.g", "edition")]
+    named = dated + 'edition = "CODATA 1900"\n'
+    found = problems_of(tmp_path, book, META + GIVENS + V3 + named)
+    assert [(p.id, p.field, "no older edition" in p.message) for p in found] == [
+        ("ch08.t.g", "edition", True)
+    ]
+
+
 def test_an_erratum_needs_the_printed_precision(tmp_path: Path, book: Book) -> None:
     text = (META + GIVENS + V3).replace(
         'expect = "verified"',

@@ -36,6 +36,19 @@ def test_every_constant_is_sourced_and_consistent() -> None:
         for old in const.older:
             assert old.edition, key
             assert old.edition != const.edition, key
+            assert old.source.strip(), (key, old.edition)  # a dated value names where it is from
+            assert len(old.edition) <= 20, (key, old.edition)  # a short name a claim can cite
+
+
+def test_dates_are_years() -> None:
+    """A constant marked ``date = true`` is a year (read at its last non-zero digit)."""
+    dates = {key: c for key, c in constants().items() if c.date}
+    assert len(dates) > 30
+    for key, const in dates.items():
+        assert const.unit == "1", key
+        assert key.endswith(("-year", "-year-bce", "-decade")), key
+        assert float(const.value).is_integer(), key
+        assert 0 < const.value < 2100, key
 
 
 def test_older_editions_of_g() -> None:

@@ -545,6 +545,8 @@ class _Checker:
                         f"{restated.unit!r}: {'/'.join(dimensionless)} values cannot be "
                         "converted to or from a physical unit",
                     )
+            if c.same_error is not None:
+                self.check_same_error(f, c, by_id.get(c.same_error))
             for dep in c.depends_on:
                 if dep not in by_id and dep not in self.catalog.rejected:
                     self.add(f, c.id, "depends_on", f"unknown claim {dep!r}")
@@ -561,6 +563,20 @@ class _Checker:
             ):
                 self.add(f, c.id, "model", "unmodeled claim in a chapter marked complete")
         self.check_cycles(by_id, file_of)
+
+    def check_same_error(self, f: ChapterFile, c: Claim, first: Claim | None) -> None:
+        """``same_error`` names the first erratum of the error: an erratum of an earlier line
+        (or the same line), itself naming no other (no chains)."""
+        add = lambda msg: self.add(f, c.id, "same_error", msg)  # noqa: E731
+        if first is None:
+            if c.same_error not in self.catalog.rejected:
+                add(f"refers to an unknown claim {c.same_error!r}")
+        elif first.expect != "erratum" or first.id == c.id:
+            add(f"{first.id} is not another erratum")
+        elif first.same_error is not None:
+            add(f"{first.id} names {first.same_error} in turn: name the first claim, no chains")
+        elif (first.line, first.id) > (c.line, c.id) and first.line != c.line:
+            add(f"{first.id} is later in the book (line {first.line}): the first claim names none")
 
     def check_cycles(self, by_id: dict[str, Claim], file_of: dict[str, ChapterFile]) -> None:
         state: dict[str, int] = {}
