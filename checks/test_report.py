@@ -82,6 +82,8 @@ class Page(HTMLParser):
         self.scripts = 0
         self._in_count = False
         self.errata_count = ""
+        self.errors_count = ""
+        self._counting = ""
 
     def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
         a = dict(attrs)
@@ -95,7 +97,7 @@ class Page(HTMLParser):
             self.errata_articles += 1
         if tag == "script":
             self.scripts += 1
-        self._in_count = a.get("id") == "errata-count"
+        self._counting = a.get("id") if a.get("id") in ("errata-count", "errors-count") else ""
         if tag not in VOID:
             self.stack.append(tag)
 
@@ -113,9 +115,11 @@ class Page(HTMLParser):
         self.stack.pop()
 
     def handle_data(self, data: str) -> None:
-        if self._in_count:
+        if self._counting == "errata-count":
             self.errata_count += data
-            self._in_count = False
+        elif self._counting == "errors-count":
+            self.errors_count += data
+        self._counting = ""
 
 
 def parse(html: str) -> Page:
@@ -184,8 +188,9 @@ def test_errata_counts_agree(report_dir: Path, page: Page, evaluation: Evaluatio
     rows = list(csv.DictReader(io.StringIO((report_dir / "errata.csv").read_text("utf-8"))))
     data = json.loads((report_dir / "claims.json").read_text("utf-8"))
     in_json = sum(c["verdict"] == "erratum" for c in data["claims"])
-    assert int(page.errata_count) == page.errata_articles == in_json == expected
+    assert int(page.errata_count) == in_json == expected
     assert data["meta"]["errata"] == expected
+    assert int(page.errors_count) == page.errata_articles == data["meta"]["errors"]
     assert data["meta"]["errors"] == len(rows) == len(errors) < expected
     assert [r["id"] for r in rows] == [e.first.id for e in errors]
     ids = [i for r in rows for i in r["ids"].split("; ")]
@@ -348,7 +353,8 @@ def test_properties_are_shown_when_present(
     assert "P is conserved" in html
     assert read_properties(tmp_path / "absent.json") is None
     absent = render_page(evaluation, result, catalog, None, figures=[])
-    assert 'id="properties"' not in absent
+    assert "P is conserved" not in absent
+    assert 'id="no-invariants"' in absent  # says how to get them
 
 
 def test_rounding_shows_its_reason(page: Page, report_dir: Path, evaluation: Evaluation) -> None:
@@ -356,8 +362,8 @@ def test_rounding_shows_its_reason(page: Page, report_dir: Path, evaluation: Eva
     for c in evaluation:
         if c.verdict == "rounding":
             row = re.search(
-                rf'<tr class="claim" data-verdict="rounding" id="claim-{re.escape(c.id)}">'
-                r"(.*?)</tr>",
+                rf'<tr class="claim" data-verdict="rounding" data-search="[^"]*" '
+                rf'id="claim-{re.escape(c.id)}">(.*?)</tr>',
                 html,
                 re.S,
             )

@@ -1,5 +1,6 @@
-"""The errata report: ``index.html`` (one self-contained page), ``errata.csv`` and
-``claims.json`` (design section 4), built from the evaluated catalog and the scan.
+"""The errata report: ``index.html`` (one self-contained page), ``errata.csv``, ``errata.md``
+and ``claims.json`` (design section 4), built from the evaluated catalog and the scan; what the
+page shows of each part is prepared in ``reports.views``.
 
 The page is rendered from jinja2 templates in ``reports/templates`` with autoescaping on, so
 everything it quotes from the book or the catalog shows as text.
@@ -8,7 +9,6 @@ everything it quotes from the book or the catalog shows as text.
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass
 from typing import Any
 
 from jinja2 import Environment, PackageLoader, select_autoescape
@@ -16,59 +16,16 @@ from jinja2 import Environment, PackageLoader, select_autoescape
 from reference.book import Book
 from reference.catalog import Catalog
 from reference.compare import VERDICTS
-from reference.evaluation import EvaluatedClaim, Evaluation
-from reference.locate import find
+from reference.evaluation import Evaluation
 from reference.scan import ScanResult
+from reference.schema import Assumption
 from reports import bangcheck_version
 from reports.errata_sheet import ERRATA_COLUMNS, errata_counts, errata_markdown, error_rows
 from reports.figures import RenderedFigure, render_all, verdict_chart
 from reports.output import claims_json, csv_text
+from reports.views import claim_row, dated_card, error_card, invariants_view
 
 EXAMPLES_PER_RULE = 3
-
-
-@dataclass(frozen=True)
-class Quote:
-    """A quote split around the claimed number, so that the page can highlight it."""
-
-    before: str
-    number: str
-    after: str
-
-
-def quote_parts(book: Book, claim: EvaluatedClaim) -> Quote:
-    """The claim's quote with the printed number at its occurrence picked out."""
-    text = book.line(claim.line)
-    start = text.find(claim.quote)
-    if start < 0 or claim.printed is None:
-        return Quote(claim.quote, "", "")
-    match, _ = find(book, claim.line, claim.printed, claim.occurrence)
-    if match is None or not start <= match.start <= match.end <= start + len(claim.quote):
-        return Quote(claim.quote, "", "")
-    a, b = match.start - start, match.end - start
-    return Quote(claim.quote[:a], claim.quote[a:b], claim.quote[b:])
-
-
-def _format_arg(value: Any, values: dict[str, EvaluatedClaim]) -> str:
-    if isinstance(value, dict) and set(value) == {"claim"}:
-        ref = values.get(value["claim"])
-        shown = ref.printed if ref else "?"
-        return f"{value['claim']} = {shown}"
-    if isinstance(value, list):
-        return "[" + ", ".join(_format_arg(v, values) for v in value) + "]"
-    return repr(value) if isinstance(value, str) else str(value)
-
-
-def model_call(claim: EvaluatedClaim, values: dict[str, EvaluatedClaim]) -> str:
-    """How the model was called: ``module.function(arg=value, ...)`` and the pick."""
-    if claim.restates:
-        return f"restates {claim.restates}"
-    if not claim.model:
-        return ""
-    args = ", ".join(f"{k}={_format_arg(v, values)}" for k, v in claim.args.items())
-    extra = ", ".join(f"{k}={v!r}" for k, v in claim.assumptions.items())
-    call = f"{claim.model}({', '.join(x for x in (args, extra) if x)})"
-    return f"{call}.{claim.pick}" if claim.pick else call
 
 
 def _coverage(scan: ScanResult) -> list[dict[str, Any]]:
@@ -168,6 +125,47 @@ def _power_section(evaluation: Evaluation) -> dict[str, Any]:
     }
 
 
+def _assumptions(evaluation: Evaluation) -> list[dict[str, str]]:
+    by_id = evaluation.catalog.by_id()
+    out = []
+    for c in evaluation:
+        if not c.assumptions:
+            continue
+        rounded = set(c.rounded_assumptions)
+        assumed = ", ".join(
+            f"{k} = {v}{' (rounded)' if k in rounded else ''}" for k, v in c.assumptions.items()
+        )
+        reasons = [a.reason for a in by_id[c.id].assumptions.values() if isinstance(a, Assumption)]
+        out.append(
+            {"id": c.id, "assumed": assumed, "reason": c.precision_reason or "; ".join(reasons)}
+        )
+    return out
+
+
+def _tolerances(evaluation: Evaluation) -> list[dict[str, str]]:
+    out = []
+    for c in evaluation:
+        settings = []
+        if c.rel_tol is not None:
+            settings.append(f"rel_tol {c.rel_tol}")
+        if c.sigfigs is not None:
+            settings.append(f"sigfigs {c.sigfigs}")
+        if c.rounding:
+            settings.append(f"declared {c.rounding}")
+        if c.exact:
+            settings.append("exact integer")
+        if c.relation != "=" or settings:
+            out.append(
+                {
+                    "id": c.id,
+                    "relation": c.relation,
+                    "setting": ", ".join(settings),
+                    "reason": c.precision_reason or "",
+                }
+            )
+    return out
+
+
 def render_page(
     evaluation: Evaluation,
     scan: ScanResult,
@@ -178,30 +176,17 @@ def render_page(
     """The report page as one HTML string, with ``figures`` already rendered
     (``reports.figures.render_all``)."""
     book = evaluation.book
-    values = evaluation.by_id()
     titles = {c.key: c.title for c in book.identity.chapters}
     chapters = []
     for key, title in titles.items():
-        rows = [c for c in evaluation if c.chapter == key]
+        rows = [claim_row(c) for c in evaluation if c.chapter == key]
         if rows:
-            chapters.append({"key": key, "title": title, "claims": rows})
+            chapters.append({"key": key, "title": title, "rows": rows})
     per_chapter = {
         key: Counter(c.verdict for c in evaluation if c.chapter == key)
         for key in titles
         if any(c.chapter == key for c in evaluation)
     }
-    errata = [
-        {
-            "claim": c,
-            "quote": quote_parts(book, c),
-            "difference": None
-            if c.value is None or not isinstance(c.model_value, float | int)
-            else c.value - c.model_value,
-            "call": model_call(c, values),
-        }
-        for c in evaluation
-        if c.verdict == "erratum"
-    ]
     slips = [s for f in catalog.files for s in f.slips]
     template = _environment().get_template("index.html.j2")
     return template.render(
@@ -212,22 +197,18 @@ def render_page(
         titles=titles,
         chart=verdict_chart({k: dict(v) for k, v in per_chapter.items()}, VERDICTS),
         coverage=_coverage(scan),
-        errata=errata,
+        errata=[error_card(evaluation, e) for e in evaluation.errors()],
+        dated=[dated_card(evaluation, c) for c in evaluation if c.verdict == "dated"],
         chapters=chapters,
         failing=[c for c in evaluation if not c.passed and c.verdict != "unmodeled"],
         power=_power_section(evaluation),
         figures=figures,
         unmodeled=[c for c in evaluation if c.verdict == "unmodeled"],
-        properties=properties,
+        properties=invariants_view(properties),
         slips=slips,
-        assumptions=[c for c in evaluation if c.assumptions],
-        tolerances=[
-            c
-            for c in evaluation
-            if c.relation != "=" or c.sigfigs is not None or c.rel_tol is not None
-        ],
+        assumptions=_assumptions(evaluation),
+        tolerances=_tolerances(evaluation),
         exclusions=_exclusion_examples(book, scan),
-        calls={c.id: model_call(c, values) for c in evaluation},
     )
 
 

@@ -59,6 +59,26 @@ class InvariantRecorder:
     def __init__(self, config: pytest.Config) -> None:
         self.config = config
         self.records: list[dict[str, Any]] = []
+        self.deselected = 0
+
+    def pytest_deselected(self, items: list[pytest.Item]) -> None:
+        self.deselected += len(items)
+
+    def scope(self) -> dict[str, Any]:
+        """Whether the run was the whole suite or a selection, and which: test paths other
+        than the configured ``testpaths``, ``-k``, ``-m``, deselected tests."""
+        option = self.config.option
+        root = self.config.rootpath
+        default = {(root / p).resolve() for p in self.config.getini("testpaths")}
+        paths = [a for a in self.config.args if (root / a.split("::")[0]).resolve() not in default]
+        parts = [f"paths {' '.join(paths)}"] if paths else []
+        if getattr(option, "keyword", ""):
+            parts.append(f"-k {option.keyword!r}")
+        if getattr(option, "markexpr", ""):
+            parts.append(f"-m {option.markexpr!r}")
+        if self.deselected:
+            parts.append(f"{self.deselected} tests deselected")
+        return {"partial": bool(parts), "selection": "; ".join(parts)}
 
     @pytest.hookimpl(wrapper=True, trylast=True)  # inside Hypothesis's own wrapper
     def pytest_runtest_call(self, item: pytest.Item) -> Generator[None]:
@@ -98,6 +118,7 @@ class InvariantRecorder:
         data = {
             "date": datetime.now(UTC).isoformat(timespec="seconds"),
             "profile": settings.get_current_profile_name(),
+            "scope": {**self.scope(), "collected": len(self.records)},
             "invariants": sorted(self.records, key=lambda r: (r["module"], r["name"])),
         }
         write_properties(self.config.rootpath, data)
