@@ -100,9 +100,73 @@ def test_the_search_finds_a_claim(browser_page) -> None:
     page.fill("#search", "")
 
 
-def test_screenshot(browser_page, report_dir: Path) -> None:
+def test_the_search_reads_the_quote_and_hides_empty_chapters(browser_page) -> None:
+    """A phrase of the book's text finds its claim; chapters left empty are hidden, heading and
+    all; a search that finds nothing says so."""
     page, _ = browser_page
-    path = report_dir / "screenshot.png"
+    page.fill("#search", "giving final top m3 velocity")
+    visible = page.eval_on_selector_all(
+        "tr.claim", "rows => rows.filter(r => !r.hidden).map(r => r.id)"
+    )
+    assert visible == ["claim-ch08.tower-100-30-10.v3"]
+    chapters = page.eval_on_selector_all(
+        ".chapter-claims", "cs => cs.filter(c => !c.hidden).map(c => c.id)"
+    )
+    assert chapters == ["chapter-8"]
+    assert page.is_hidden("#no-matches")
+    page.fill("#search", "no claim says this")
+    assert page.is_visible("#no-matches")
+    assert page.inner_text("#shown-count") == "0"
+    page.fill("#search", "")
+    assert page.is_hidden("#no-matches")
+
+
+@pytest.mark.parametrize("width", [390, 1400])
+def test_the_page_fits_its_width_and_shows_no_python(browser_page, width: int) -> None:
+    """No horizontal overflow on a phone (390 px) or a wide screen (1,400 px): wide tables
+    scroll inside the page; no Python repr ("None", "[1.0, 2.0]") in the text."""
+    page, _ = browser_page
+    page.set_viewport_size({"width": width, "height": 900})
+    assert page.evaluate("document.documentElement.scrollWidth") <= width
+    words = page.evaluate("document.body.innerText").split()
+    assert "None" not in words
+    assert "nan" not in words
+    page.set_viewport_size({"width": 1280, "height": 900})
+
+
+@pytest.mark.parametrize("anchor", ["claim-ch08.tower-100-30-10.v3", "errata", "power"])
+def test_anchors_land_below_the_sticky_bar(browser_page, report_dir: Path, anchor: str) -> None:
+    page, _ = browser_page
+    page.goto((report_dir / "index.html").as_uri() + "#" + anchor)
+    page.wait_for_timeout(50)
+    target = page.eval_on_selector(f'[id="{anchor}"]', "e => e.getBoundingClientRect().top")
+    top, bottom = page.eval_on_selector(
+        ".controls", "e => [e.getBoundingClientRect().top, e.getBoundingClientRect().bottom]"
+    )
+    assert 0 <= target < 900  # in view
+    if top <= 1:  # the bar is stuck at the top of the view: the target is not under it
+        assert target >= bottom - 1, (target, bottom)
+
+
+def test_no_accessibility_violations(browser_page, report_dir: Path) -> None:
+    """axe-core (the npm package's build, bundled by axe-playwright-python) finds no
+    violation of WCAG 2 A/AA or best practice on the page: contrast, landmarks, names."""
+    try:
+        from axe_playwright_python.sync_playwright import Axe
+    except ImportError:
+        _unavailable("axe-playwright-python is not installed: pip install -e '.[test]'")
+    page, _ = browser_page
+    page.goto((report_dir / "index.html").as_uri())
+    violations = Axe().run(page).response["violations"]
+    assert [(v["id"], v["impact"], len(v["nodes"])) for v in violations] == []
+
+
+@pytest.mark.parametrize("width", [390, 1400])
+def test_screenshot(browser_page, report_dir: Path, width: int) -> None:
+    page, _ = browser_page
+    page.set_viewport_size({"width": width, "height": 900})
+    path = report_dir / f"screenshot-{width}.png"
     page.screenshot(path=str(path), full_page=False)
+    page.set_viewport_size({"width": 1280, "height": 900})
     assert path.stat().st_size > 10_000
     print(f"screenshot: {path}")
