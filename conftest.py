@@ -60,6 +60,7 @@ _EVALUATION = pytest.StashKey[Evaluation]()
 _SCAN = pytest.StashKey[ScanResult]()
 _REPORT = pytest.StashKey[BackgroundReport]()
 _WORKER_VERDICTS = pytest.StashKey[Counter[str]]()
+_SELECTED = pytest.StashKey[set[str]]()  # the claims whose tests this session runs
 _WORKER_ERRORS = pytest.StashKey[int | None]()
 _VERDICTS_KEY = "bangcheck_verdicts"  # in an xdist worker's workeroutput
 _ERRORS_KEY = "bangcheck_errors"
@@ -143,6 +144,11 @@ def _freeze_long_lived() -> None:
 
 
 def pytest_collection_finish(session: pytest.Session) -> None:
+    session.config.stash[_SELECTED] = {
+        item.callspec.params["claim_id"]
+        for item in session.items
+        if "claim_id" in getattr(getattr(item, "callspec", None), "params", {})
+    }
     _start_report_in_background(session)
     _freeze_long_lived()
 
@@ -253,13 +259,29 @@ def whole_scan(pytestconfig: pytest.Config, book: Book) -> ScanResult:
     return scan_of(pytestconfig)
 
 
+def _selected_counts(config: pytest.Config) -> tuple[Counter[str], int] | None:
+    """Verdict counts and distinct errors of the claims whose tests this session selected
+    (all of them, or those ``-k`` kept); None when it selected no claim test."""
+    selected = config.stash.get(_SELECTED, set())
+    if not selected:
+        return None
+    evaluation = evaluation_of(config)
+    if evaluation is None:
+        return None
+    counts = Counter(c.verdict for c in evaluation if c.id in selected)
+    errors = [e for e in evaluation.errors() if any(c.id in selected for c in e.claims)]
+    return counts, len(errors)
+
+
 def pytest_sessionfinish(session: pytest.Session) -> None:
-    """An xdist worker that evaluated the catalog hands its verdict counts to the controller."""
+    """An xdist worker that evaluated the catalog hands its verdict counts (of the selected
+    claims) to the controller."""
     output = getattr(session.config, "workeroutput", None)
-    evaluation = session.config.stash.get(_EVALUATION, None)
-    if output is not None and evaluation is not None:
-        output[_VERDICTS_KEY] = dict(evaluation.verdict_counts())
-        output[_ERRORS_KEY] = len(evaluation.errors())
+    if output is not None and _EVALUATION in session.config.stash:
+        found = _selected_counts(session.config)
+        if found is not None:
+            output[_VERDICTS_KEY] = dict(found[0])
+            output[_ERRORS_KEY] = found[1]
 
 
 @pytest.hookimpl(optionalhook=True)
@@ -283,14 +305,16 @@ def pytest_terminal_summary(
     if counts is None and _CATALOG not in config.stash:
         return result  # the catalog was refused at collection: the usage error says why
     errors = config.stash.get(_WORKER_ERRORS, None)
-    if counts is None:
-        evaluation = evaluation_of(config)
-        if evaluation is not None:
-            counts, errors = evaluation.verdict_counts(), len(evaluation.errors())
+    if counts is None and not hasattr(config, "workerinput"):
+        found = _selected_counts(config)
+        if found is not None:
+            counts, errors = found
     if counts is not None:
         shown = verdict_summary(((v, counts[v]) for v in VERDICTS), errors)
         total = sum(counts.values())
-        terminalreporter.write_line(f"bangcheck verdicts: {total} claims: {shown}")
+        everything = sum(1 for _ in catalog_of(config).claims())
+        of = "" if total == everything else f" (selected of {everything})"
+        terminalreporter.write_line(f"bangcheck verdicts: {total} claims{of}: {shown}")
     return result
 
 

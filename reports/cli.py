@@ -33,6 +33,7 @@ from reports.invariants import (
     read_properties,
 )
 from reports.outdir import OutputError, check_target, shown, write_report_dir
+from reports.views import printed_shown
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report it
@@ -114,15 +115,29 @@ def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) ->
             print(json.dumps(c.to_json(), ensure_ascii=False, sort_keys=False))
         return
     width = max((len(c.id) for c in rows), default=2)
-    print(f"{'id':<{width}}  {'line':>5}  {'printed':>12}  {'model':>16}  verdict (expect)")
-    for c in rows:
+    shown = [printed_shown(c) for c in rows]
+    pwidth = max((len(s) for s in shown), default=7)
+    print(f"{'id':<{width}}  {'line':>5}  {'printed':>{pwidth}}  {'model':>16}  verdict (expect)")
+    for c, printed in zip(rows, shown, strict=True):
         mark = "" if c.passed else "   <-- differs"
-        reason = f" [{c.rounding_reason}]" if c.rounding_reason else ""
+        reason = (
+            f" [{c.rounding_reason or c.matched_edition}]"
+            if c.rounding_reason or (c.matched_edition)
+            else ""
+        )
+        model = c.model_expression if c.kind == "formula" else c.model_value
         print(
-            f"{c.id:<{width}}  {c.line:>5}  {c.printed or c.expression or '-':>12}  "
-            f"{_fmt(c.model_value if c.kind != 'formula' else c.model_expression):>16}  "
+            f"{c.id:<{width}}  {c.line:>5}  {printed:>{pwidth}}  {_fmt(model):>16}  "
             f"{c.verdict}{reason} ({c.expect}){mark}"
         )
+        if c.verdict in ("erratum", "dated"):
+            diagnosis = c.diagnosis or {}
+            pad = " " * (width + 2)
+            print(f"{pad}correct: {c.correct or '-'}")
+            if diagnosis.get("kind"):
+                print(f"{pad}diagnosis: {diagnosis['kind']}: {diagnosis['note']}")
+            if diagnosis.get("auto"):
+                print(f"{pad}automatic: {diagnosis['auto']}")
 
 
 def _claims(args: argparse.Namespace) -> int:
