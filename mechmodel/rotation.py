@@ -233,6 +233,13 @@ def percussion_fraction(half_length: Any, hit_divisor: Any) -> Any:
     return _div(percussion_radius(half_length, _div(half_length, hit_divisor)), half_length)
 
 
+def percussion_radius_for_divisor(half_length: Any, hit_divisor: Any) -> Any:
+    """Percussion radius p for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/3
+    gives p = l)."""
+    inputs.positive(hit_divisor, "hit_divisor")
+    return percussion_radius(half_length, _div(half_length, hit_divisor))
+
+
 def radius_of_gyration(rod_length: Any) -> float:
     """Radius of gyration sqrt(I/M) about the centre of a free rod of total length L = 2l:
     l/sqrt(3) (text after Fig. 11.10)."""

@@ -151,3 +151,14 @@ def test_rod_inertia_by_mass(mass: Fraction, length: Fraction) -> None:
     assert inertia == rotation.rod_inertia_about_end(mass / length, length)
     assert inertia == mass * length * length / 3
     assert rotation.free_rod_inertia(mass, length) == inertia
+
+
+@given(exact_radii(), hit_fractions())
+@example(Fraction(1), Fraction(1, 3))  # h = l/3 gives p = l
+def test_percussion_radius_for_a_hit_at_a_fraction(half: Fraction, hit: Fraction) -> None:
+    """A hit at h = l/d puts the percussion point at p = d l/3: h p = l^2/3 (Fig. 11.10), the
+    radius growing as the hit height falls."""
+    divisor = 1 / hit
+    p = rotation.percussion_radius_for_divisor(half, divisor)
+    assert p * half / divisor == half * half / 3
+    assert p == rotation.percussion_fraction(half, divisor) * half
