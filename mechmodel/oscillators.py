@@ -176,6 +176,27 @@ def derivative_phase(order: Any) -> float:
     return advance % (2 * math.pi)
 
 
+def derivative_in_terms_of(order: Any, base_order: Any, omega: Any, base: Any) -> Any:
+    """The ``order``-th time derivative of the orbit written through its ``base_order``-th
+    derivative ``base`` (a component or the vector's length): c * base, where the two derivatives
+    share their trigonometric functions up to one common sign and c = +-w^(order - base_order)
+    by the chain rule (text after (11.5b)-(11.5d): a = -w^2 r, j = -w^2 v, i = w^4 r; the fifth
+    derivative is w^4 v). ``ValueError`` where the two are not proportional (v is no multiple of
+    r: they are a quarter turn apart)."""
+    inputs.positive(omega, "omega")
+    high, low = orbit_derivative_form(order), orbit_derivative_form(base_order)
+    if high.order < low.order:
+        raise ValueError("order must not be below base_order")
+    signs = set()
+    for mine, theirs in ((high.x_function, low.x_function), (high.y_function, low.y_function)):
+        if mine.lstrip("-") != theirs.lstrip("-"):
+            raise ValueError(f"derivative {high.order} is no multiple of derivative {low.order}")
+        signs.add(1 if mine.startswith("-") == theirs.startswith("-") else -1)
+    if len(signs) != 1:
+        raise ValueError("the two components change sign differently")  # pragma: no cover
+    return signs.pop() * omega ** (high.omega_power - low.omega_power) * base
+
+
 def angular_momentum(mass: Any, a: Any, b: Any, omega: Any, t: Any) -> Any:
     """Orbital angular momentum L = m (x v_y - y v_x) at time t ((11.21)-(11.22))."""
     inputs.mass(mass)
@@ -270,6 +291,17 @@ def area_law_coefficient(a: Any, b: Any, omega: Any, t: Any = 0) -> float:
     return areal_velocity(a, b, omega) / abs(rv)
 
 
+def area_swept(angular_momentum: Any, mass: Any, dt: Any) -> float:
+    """Area swept in the time dt by the radius vector of a mass m of orbital angular momentum L
+    (text after Fig. 11.8, Kepler's equal areas): it depends on L/m = |r x v| alone (11.22), so
+    take the circular orbit a = b = 1 with that |r x v| = a b w, w = L/m, and its whole
+    area pi a b per period 2 pi/w, at the constant rate of the area law."""
+    inputs.positive(angular_momentum, "angular_momentum")
+    inputs.mass(mass)
+    inputs.real(dt, "dt")
+    return areal_velocity(1, 1, angular_momentum / mass) * dt
+
+
 def eccentric_anomaly(a: Any, b: Any, point: Sequence[Any]) -> float:
     """The clock-hand angle u of a point (a cos u, b sin u) of the ellipse (Fig. 11.1)."""
     _semi_axes(a, b)
@@ -341,6 +373,50 @@ def curvature_radius(speed: Any, acceleration: Any) -> Any:
     inputs.real(speed, "speed")
     inputs.positive(acceleration, "acceleration")
     return speed * speed / acceleration
+
+
+def circular_acceleration(radius: Any, omega: Any) -> float:
+    """Magnitude of the acceleration of uniform motion at the rate w on a circle of radius r:
+    the orbit (11.5a) with a = b = r differentiated twice ((11.5b), the acceleration vector at
+    any time; taken at t = 0). The centrifugal acceleration of (11.3b) is its reaction."""
+    inputs.positive(radius, "radius")
+    return math.hypot(*orbit_derivative(radius, radius, omega, 0, 2))
+
+
+def circular_acceleration_at_speed(radius: Any, speed: Any) -> float:
+    """The same acceleration for the rim speed V: the rate is w = V/r (V = w r, (11.3))."""
+    inputs.positive(radius, "radius")
+    inputs.positive(speed, "speed")
+    return circular_acceleration(radius, speed / radius)
+
+
+def circular_force(mass: Any, radius: Any, omega: Any) -> float:
+    """Centrifugal force on a mass m turning at w on a circle of radius r (Fig. 11.2, (11.3a)):
+    m times the acceleration its circular motion needs."""
+    inputs.mass(mass)
+    return mass * circular_acceleration(radius, omega)
+
+
+def circular_force_at_speed(mass: Any, radius: Any, speed: Any) -> float:
+    """The same centrifugal force for the rim speed V ((11.3a))."""
+    inputs.mass(mass)
+    return mass * circular_acceleration_at_speed(radius, speed)
+
+
+def curvature_radius_at_speed(speed: Any, acceleration: Any) -> float:
+    """Radius of the circle of curvature of a path driven at speed V with transverse
+    acceleration a (11.3c): at fixed V the circular acceleration falls in inverse proportion to
+    the radius (the orbit scaled by s at the rate w/s), so r = (acceleration at r = 1)/a."""
+    inputs.positive(acceleration, "acceleration")
+    return circular_acceleration_at_speed(1, speed) / acceleration
+
+
+def curvature_radius_at_rate(omega: Any, acceleration: Any) -> float:
+    """Radius of the circle of curvature for the angular rate w and transverse acceleration a
+    (11.3c): at fixed w the circular acceleration grows in proportion to the radius (the orbit
+    (11.5a) is linear in a = b = r), so r = a/(acceleration at r = 1)."""
+    inputs.positive(acceleration, "acceleration")
+    return acceleration / circular_acceleration(1, omega)
 
 
 def angular_frequency(frequency: Any) -> float:
@@ -430,6 +506,12 @@ def form_expansion(A: Any, B: Any, C: Any) -> FormExpansion:  # noqa: N803 - the
     if B == 0:
         raise ValueError("B must be nonzero to read the factor of B")
     return FormExpansion(xx, xy, yy, _div(xy, B))
+
+
+def quadratic_form(A: Any, B: Any, C: Any, x: Any, y: Any) -> Any:  # noqa: N803
+    """The form (x y).(A B; B C).(x y) of (11.20), by the matrix products (plain operators:
+    exact for rationals, an expression for sympy symbols)."""
+    return form_value(((A, B), (B, C)), (x, y))
 
 
 @dataclass(frozen=True)
@@ -560,6 +642,27 @@ def dual_ellipse(a: Any, b: Any) -> DualEllipse:
     return DualEllipse(rx, ry, rx * a, ry * b)
 
 
+def dual_vector(a: Any, b: Any, phi: Any) -> Vector:
+    """The vector p = Q.r of the orbit point r = (a cos phi, b sin phi), phi the time-phase
+    angle (11.8): the matrix Q = diag(1/a^2, 1/b^2) applied to r."""
+    inputs.real(phi, "phi")
+    return apply(ellipse_form(a, b), (a * math.cos(phi), b * math.sin(phi)))
+
+
+def operator_image(a: Any, b: Any, power: Any, x: Any, y: Any) -> Vector:
+    """R^power applied to the vector (x, y), R = diag(1/a, 1/b) ((11.12)-(11.13): power 2 is
+    Q.r, power -2 is Q^-1.r)."""
+    return apply(matrix_power(slope_operator(a, b), power), (x, y))
+
+
+def image_slope(a: Any, b: Any, power: Any, angle: Any) -> float:
+    """Slope tan of the polar angle of R^power applied to a vector of polar angle ``angle``
+    ((11.16): p(phi_k+1) = Q.r(phi_k-1) for power 2)."""
+    inputs.real(angle, "angle")
+    x, y = operator_image(a, b, power, math.cos(angle), math.sin(angle))
+    return y / x
+
+
 @dataclass(frozen=True)
 class ScaledRadii:
     """Radii scaled by the geometric mean S = sqrt(ab): a_S = a/S, b_S = b/S, and a_S b_S."""
@@ -576,6 +679,13 @@ def scaled_radii(a: Any, b: Any) -> ScaledRadii:
     s = exact_sqrt(a * b)
     a_s, b_s = _div(a, s), _div(b, s)
     return ScaledRadii(s, a_s, b_s, a_s * b_s)
+
+
+def unit_scale(area_product: Any) -> Any:
+    """The geometric-mean scale S = sqrt(ab) of (11.11) from the product ab of the radii (the
+    triads' ab = 1 gives the unit scale S = 1, before (11.18)); exact for rational squares."""
+    inputs.positive(area_product, "area_product")
+    return exact_sqrt(area_product)
 
 
 def major_axis_angle(matrix: Matrix) -> float:
@@ -690,3 +800,49 @@ def triad_vectors(a: Any, area_product: Any, phi0: Any, k: Any = 0) -> TriadVect
     r = (a * math.cos(phi), b * math.sin(phi))
     p = apply(ellipse_form(a, b), r)
     return TriadVectors(r, p, a / r[0], b / r[1], b / p[0], a / p[1])
+
+
+@dataclass(frozen=True)
+class TriadDirection:
+    """The direction of the k-th line of the triad sequence: cos phi_k, sin phi_k and the slope
+    tan phi_k (Fig. 11.7, (11.19))."""
+
+    cos: float
+    sin: float
+    slope: float
+
+
+def triad_direction(a: Any, b: Any, start_slope: Any, k: Any) -> TriadDirection:
+    """Direction of the k-th line of the sequence started on the line of slope ``start_slope``
+    (phi_0 = atan of it: the book's phi_0 = pi/4 has slope 1), stepped by ``triad_angle``."""
+    inputs.real(start_slope, "start_slope")
+    phi = triad_angle(a, b, math.atan(start_slope), k)
+    return TriadDirection(math.cos(phi), math.sin(phi), math.tan(phi))
+
+
+@dataclass(frozen=True)
+class BookTriad:
+    """The radius r(phi_j) = (a cos phi_j+1, b sin phi_j+1) and the perpendicular
+    p(phi_j) = Q.r(phi_j-2) = (b cos phi_j-1, a sin phi_j-1) of the book's triads (11.18)."""
+
+    r: Vector
+    p: Vector
+
+
+def book_triad(a: Any, b: Any, area_product: Any, start_slope: Any, j: Any) -> BookTriad:
+    """The vectors r(phi_j) and p(phi_j) of (11.18) with the book's matrix at unit scale: the
+    book lets ab = 1 and writes Q = diag(1/a^2, 1/b^2) as diag(b/a, a/b) (before (11.18),
+    S = sqrt(ab) = 1 in (11.11)), which is Q times ab/``area_product`` for
+    ``area_product`` = 1; that form is kept for any a and b. phi_j is the polar angle of both
+    vectors; the timer angles are those of ``triad_direction``."""
+    inputs.positive(area_product, "area_product")
+    j = int(j)
+    q = ellipse_form(a, b)
+    scale = a * b / area_product
+    book_q = tuple(tuple(scale * e for e in row) for row in q)
+
+    def radius(index: int) -> Vector:
+        d = triad_direction(a, b, start_slope, index + 1)
+        return (a * d.cos, b * d.sin)
+
+    return BookTriad(radius(j), apply(book_q, radius(j - 2)))

@@ -80,6 +80,15 @@ def point_inertia(mass: Any, radius: Any) -> Any:
     return _div(point_angular_momentum(mass, radius, _SAMPLE_OMEGA), _SAMPLE_OMEGA)
 
 
+def inertia_energy(inertia: Any, omega: Any) -> Any:
+    """Kinetic energy of rotation at w of a point mass of rotational inertia I (11.23): the
+    mass I/point_inertia(1, 1) on the unit circle has that inertia, and its energy is
+    1/2 m V^2 with V = w r."""
+    inputs.positive(inertia, "inertia")
+    unit = point_inertia(1, 1)
+    return rotation_energy(_div(inertia, unit), 1, omega)
+
+
 @dataclass(frozen=True)
 class RotationForm:
     """The form of a point mass's rotational energy and angular momentum (11.23)-(11.24):
@@ -131,6 +140,14 @@ def rod_inertia_about_end(density: Any, length: Any) -> Any:
     inputs.positive(length, "length")
     n = 2  # dI = r^2 dm
     return _div(density * length ** (n + 1), n + 1)
+
+
+def rod_inertia_of_mass(mass: Any, length: Any) -> Any:
+    """Inertia about one end of a uniform rod of mass M and length l: the integral (11.25) with
+    the density rho = M/l."""
+    inputs.mass(mass)
+    inputs.positive(length, "length")
+    return rod_inertia_about_end(_div(mass, length), length)
 
 
 @dataclass(frozen=True)
@@ -214,6 +231,13 @@ def percussion_fraction(half_length: Any, hit_divisor: Any) -> Any:
     """p/l for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/2 gives p = 2l/3)."""
     inputs.positive(hit_divisor, "hit_divisor")
     return _div(percussion_radius(half_length, _div(half_length, hit_divisor)), half_length)
+
+
+def percussion_radius_for_divisor(half_length: Any, hit_divisor: Any) -> Any:
+    """Percussion radius p for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/3
+    gives p = l)."""
+    inputs.positive(hit_divisor, "hit_divisor")
+    return percussion_radius(half_length, _div(half_length, hit_divisor))
 
 
 def radius_of_gyration(rod_length: Any) -> float:

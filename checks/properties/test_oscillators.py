@@ -418,3 +418,163 @@ def test_tidal_force_is_the_centrifugal_force_at_the_orbit_frequency(
     force = osc.tidal_force(frequency, mass, offset)
     assert math.isclose(force, mass * (2 * math.pi * frequency) ** 2 * offset, rel_tol=1e-12)
     assert math.isclose(osc.tidal_force(frequency, mass, 2 * offset), 2 * force, rel_tol=1e-12)
+
+
+# --- formulas of the book checked whole (formula claims) -------------------------------------
+
+
+@given(
+    orbit_radii(),
+    orbit_radii(),
+    orbit_omegas(),
+    orbit_phases(),
+    st.integers(min_value=0, max_value=8),
+    st.integers(min_value=0, max_value=2),
+)
+@example(2.2, 1.0, 1.0, 0.3, 1, 2)  # the fifth derivative through v: w^4 v
+def test_derivatives_through_r_or_v(
+    a: float, b: float, w: float, u: float, base: int, half_steps: int
+) -> None:
+    """The derivative of order n = m + 2j is +-w^(2j) times the m-th at every time (a = -w^2 r,
+    j = -w^2 v, i = w^4 r, the fifth w^4 v); an odd step is no multiple."""
+    t = u / w
+    order = base + 2 * half_steps
+    low = osc.orbit_derivative(a, b, w, t, base)
+    high = osc.orbit_derivative(a, b, w, t, order)
+    scale = (a + b) * w**order
+    for c, d in zip(low, high, strict=True):
+        assert close(osc.derivative_in_terms_of(order, base, w, c), d, scale, TRIG)
+    assert osc.derivative_in_terms_of(order, base, w, 1.0) == (-1) ** half_steps * w ** (
+        2 * half_steps
+    )
+    with pytest.raises(ValueError, match="no multiple"):
+        osc.derivative_in_terms_of(order + 1, base, w, 1.0)
+    with pytest.raises(ValueError, match="below"):
+        osc.derivative_in_terms_of(base, base + 2, w, 1.0)
+
+
+@given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases(), orbit_fractions())
+@example(2.2, 1.0, 1.0, 0.0, 0.25)
+def test_swept_area_from_the_angular_momentum(
+    a: float, b: float, w: float, u: float, turns: float
+) -> None:
+    """The area swept in dt by the orbit of L = m a b w (11.22), measured as a sector of the
+    ellipse, is what ``area_swept`` gives from L and m alone: (1/2)(L/m) dt, not (L/m) dt."""
+    mass = 1.9
+    dt = turns * osc.orbit_period(w)
+    swept = osc.swept_area(a, b, w, u / w, u / w + dt)
+    from_momentum = osc.area_swept(mass * a * b * w, mass, dt)
+    assert close(from_momentum, swept, swept, TRIG)
+    assert close(from_momentum, a * b * w * dt / 2, swept, TRIG)
+
+
+@given(orbit_radii(), orbit_omegas())
+def test_circular_motion_needs_omega_squared_r(r: float, w: float) -> None:
+    """The acceleration of uniform circular motion is w^2 r = V^2/r (11.3b): against a finite
+    difference of the positions; the force is m times it (11.3a); the circle of curvature of
+    that motion has the radius V^2/a = a/w^2 = r (11.3c)."""
+    mass = 2.5
+    v = w * r
+    accel = osc.circular_acceleration(r, w)
+    h = 1e-4 / w
+    plus, here, minus = (osc.orbit_position(r, r, w, s) for s in (h, 0.0, -h))
+    difference = math.hypot(*(p - 2 * q + m for p, q, m in zip(plus, here, minus, strict=True)))
+    assert close(difference / (h * h), accel, accel, 1e-6)
+    assert close(osc.circular_acceleration_at_speed(r, v), accel, accel)
+    assert close(accel, osc.centrifugal_acceleration(v, r), accel)
+    assert close(osc.circular_force(mass, r, w), mass * accel, mass * accel)
+    assert close(osc.circular_force_at_speed(mass, r, v), mass * accel, mass * accel)
+    assert close(osc.curvature_radius_at_speed(v, accel), r, r)
+    assert close(osc.curvature_radius_at_rate(w, accel), r, r)
+
+
+@given(exact_radii(), exact_radii(), exact_radii(), exact_radii(), exact_radii())
+def test_quadratic_form_expands_with_twice_the_cross_term(
+    A: Fraction,  # noqa: N803
+    B: Fraction,  # noqa: N803
+    C: Fraction,  # noqa: N803
+    x: Fraction,
+    y: Fraction,
+) -> None:
+    """(x y).(A B; B C).(x y) = A x^2 + 2B xy + C y^2 (11.20), exactly; swapping the axes swaps
+    A and C."""
+    value = osc.quadratic_form(A, B, C, x, y)
+    assert value == A * x * x + 2 * B * x * y + C * y * y
+    assert value == osc.quadratic_form(C, B, A, y, x)
+    assert osc.quadratic_form(A, B, C, 2 * x, 2 * y) == 4 * value
+
+
+@given(orbit_radii(), orbit_radii(), orbit_phases())
+def test_dual_vector_is_perpendicular_and_projects_to_one(a: float, b: float, u: float) -> None:
+    """p = Q.r = ((1/a) cos phi, (1/b) sin phi) (11.8b) is perpendicular to the velocity
+    (-a sin phi, b cos phi) and p.r = 1 (11.10c)."""
+    p = osc.dual_vector(a, b, u)
+    r = (a * math.cos(u), b * math.sin(u))
+    rdot = (-a * math.sin(u), b * math.cos(u))
+    scale = (a + b) * (1 / a + 1 / b)
+    assert close(osc.dot(p, r), 1.0, scale, TRIG)
+    assert close(osc.dot(p, rdot), 0.0, scale, TRIG)
+
+
+@given(exact_radii(), exact_radii(), matrix_powers(), matrix_powers(), exact_radii(), exact_radii())
+def test_operator_images_compose_as_powers(
+    a: Fraction, b: Fraction, m: int, n: int, x: Fraction, y: Fraction
+) -> None:
+    """R^m.(R^n.r) = R^(m+n).r exactly; Q = R^2 and Q^-1 = R^-2 undo each other (11.13); the
+    image's slope is (a/b)^n times the slope of r (11.12)."""
+    inner = osc.operator_image(a, b, n, x, y)
+    assert osc.operator_image(a, b, m, *inner) == osc.operator_image(a, b, m + n, x, y)
+    assert osc.operator_image(a, b, -2, *osc.operator_image(a, b, 2, x, y)) == (x, y)
+    assert inner[1] / inner[0] == (a / b) ** n * (y / x)
+
+
+@given(orbit_radii(), orbit_radii(), matrix_powers(), st.floats(min_value=-1.3, max_value=1.3))
+def test_image_slope_multiplies_the_tangent(a: float, b: float, power: int, angle: float) -> None:
+    """tan of the image of a vector at ``angle`` is (a/b)^power tan(angle) ((11.16) for Q)."""
+    expected = osc.slope_gain(a, b, power) * math.tan(angle)
+    assert close(osc.image_slope(a, b, power, angle), expected, abs(expected) + 1e-300, TRIG)
+
+
+@given(exact_radii(), exact_radii())
+def test_unit_scale_is_the_geometric_mean(a: Fraction, b: Fraction) -> None:
+    """S = sqrt(ab) (11.11), exact for rational squares: S^2 = ab, the scale of
+    ``scaled_radii``; ab = 1 gives S = 1."""
+    square = a * a * b * b
+    assert osc.unit_scale(square) == a * b
+    assert osc.unit_scale(a * a * b * b) == osc.scaled_radii(a * a * b, b).scale
+    assert osc.unit_scale(1) == 1
+
+
+@given(orbit_radii(), orbit_radii(), triad_start_angles(), triad_indices())
+def test_triad_direction_is_a_geometric_slope_series(
+    a: float, b: float, phi0: float, k: int
+) -> None:
+    """tan phi_k = (a/b)^k tan phi_0 (11.19, (11.16)), so with phi_0 = pi/4
+    cos phi_k = b^k/sqrt(a^2k + b^2k) and sin phi_k = a^k/sqrt(a^2k + b^2k)."""
+    d = osc.triad_direction(a, b, math.tan(phi0), k)
+    assert close(d.cos**2 + d.sin**2, 1.0, 1.0, TRIG)
+    expected = (a / b) ** k * math.tan(phi0)
+    assert close(d.slope, expected, expected, TRIG)
+    assert d.cos > 0  # the first quadrant is kept
+    assert d.sin > 0
+
+
+@given(orbit_radii(), orbit_radii(), exact_radii(), triad_indices())
+def test_book_triad_vectors(a: float, b: float, area: Fraction, j: int) -> None:
+    """r(phi_j) lies on the ellipse and points along phi_j; p(phi_j) = Q.r(phi_j-2) scaled by
+    ab/P points along phi_j too and projects to ab/P on r(phi_j-2) (11.17b) (P = ab = 1 in the
+    book); with P = 1 its components are (b cos phi_j-1, a sin phi_j-1) (11.18)."""
+    t = osc.book_triad(a, b, area, 1.0, j)
+    before = osc.book_triad(a, b, area, 1.0, j - 2)
+    here = osc.triad_direction(a, b, 1.0, j)
+    previous = osc.triad_direction(a, b, 1.0, j - 1)
+    assert close((t.r[0] / a) ** 2 + (t.r[1] / b) ** 2, 1.0, 1.0, TRIG)
+    for v in (t.r, t.p):
+        norm = math.hypot(*v)
+        assert close(v[0] / norm, here.cos, 1.0, TRIG)
+        assert close(v[1] / norm, here.sin, 1.0, TRIG)
+    ratio = a * b / float(area)
+    assert close(osc.dot(t.p, before.r), ratio, ratio, TRIG)
+    unit = osc.book_triad(a, b, 1, 1.0, j)
+    assert close(unit.p[0], b * previous.cos, a + b, TRIG)
+    assert close(unit.p[1], a * previous.sin, a + b, TRIG)

@@ -133,3 +133,32 @@ def test_rod_points_roll_on_the_percussion_tire(
     assert rotation.cycloid_kind(0, p) == "line"
     assert rotation.cycloid_kind(p / 2, p) == "prolate"
     assert rotation.cycloid_kind(2 * p, p) == "curlate"
+
+
+@given(exact_radii(), exact_radii(), exact_radii())
+def test_inertia_energy_is_the_point_mass_energy(m: Fraction, r: Fraction, w: Fraction) -> None:
+    """1/2 I w^2 with I = m r^2 is the point mass's 1/2 m r^2 w^2 (11.23), exactly."""
+    inertia = rotation.point_inertia(m, r)
+    assert rotation.inertia_energy(inertia, w) == rotation.rotation_energy(m, r, w)
+    assert rotation.inertia_energy(inertia, 2 * w) == 4 * rotation.inertia_energy(inertia, w)
+
+
+@given(exact_radii(), exact_radii())
+def test_rod_inertia_by_mass(mass: Fraction, length: Fraction) -> None:
+    """A rod of mass M = rho l about one end has I = rho l^3/3 = M l^2/3 (11.25), exactly; two
+    such rods of mass M/2 welded end to end (a free rod of half-length l) keep I = M l^2/3."""
+    inertia = rotation.rod_inertia_of_mass(mass, length)
+    assert inertia == rotation.rod_inertia_about_end(mass / length, length)
+    assert inertia == mass * length * length / 3
+    assert rotation.free_rod_inertia(mass, length) == inertia
+
+
+@given(exact_radii(), hit_fractions())
+@example(Fraction(1), Fraction(1, 3))  # h = l/3 gives p = l
+def test_percussion_radius_for_a_hit_at_a_fraction(half: Fraction, hit: Fraction) -> None:
+    """A hit at h = l/d puts the percussion point at p = d l/3: h p = l^2/3 (Fig. 11.10), the
+    radius growing as the hit height falls."""
+    divisor = 1 / hit
+    p = rotation.percussion_radius_for_divisor(half, divisor)
+    assert p * half / divisor == half * half / 3
+    assert p == rotation.percussion_fraction(half, divisor) * half
