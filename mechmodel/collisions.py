@@ -524,6 +524,13 @@ def inertia_tensor(masses: Sequence[Any]) -> tuple[tuple[Any, ...], ...]:
     )
 
 
+def inertia_coefficient_count(n: Any) -> int:
+    """How many inertia coefficients M_jk a full inertia matrix of dimension ``n`` >= 1 holds
+    (the upgrade of (3.9a) to (3.9b)): counted over the rows of the n x n ``inertia_tensor``."""
+    size = inputs.count(n, "n", minimum=1)
+    return sum(len(row) for row in inertia_tensor([1] * size))
+
+
 def _check_matrix(inertia: Sequence[Sequence[Any]], n: int) -> None:
     if len(inertia) != n or any(len(row) != n for row in inertia):
         raise ValueError(f"the inertia matrix must be {n} x {n} to match the velocity vectors")

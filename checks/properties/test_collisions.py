@@ -44,6 +44,7 @@ from mechmodel.collisions import (
     ellipse_tensor_form,
     energy_ellipse,
     energy_ellipse_form,
+    inertia_coefficient_count,
     inertia_tensor,
     kinetic_energy,
     kinetic_energy_change,
@@ -548,6 +549,18 @@ def test_both_ka_whump_points_lie_on_the_momentum_line_and_the_reduced_ellipse(
 
 
 # -- tensor forms ((3.9)-(3.14)) -------------------------------------------------------------
+
+
+@given(st.integers(min_value=1, max_value=12))
+def test_a_full_inertia_matrix_has_n_squared_coefficients(n: int) -> None:
+    """The inertia matrix of n bodies is n x n: n^2 coefficients M_jk ((3.9a) to (3.9b)), of
+    which the diagonal ones are the masses; no dimension below 1."""
+    assert inertia_coefficient_count(n) == n * n
+    masses = [Fraction(j + 1) for j in range(n)]
+    tensor = inertia_tensor(masses)
+    assert [tensor[j][j] for j in range(n)] == masses
+    with pytest.raises(ValueError, match="at least 1"):
+        inertia_coefficient_count(0)
 
 
 @given(exact_symmetric_matrices(), exact_velocity_pairs(), exact_velocity_pairs())
