@@ -62,6 +62,16 @@ def floor_impulse(m: Any, v: Any, restitution: Any = 1) -> Any:
     return abs(m * (v - floor_bounce(v, restitution)))
 
 
+def bounce_impulse(m: Any, speed: Any, restitution: Any = 1) -> Any:
+    """Size of the momentum the floor (the Earth) absorbs from a ball of mass ``m`` that hits it
+    at ``speed`` >= 0, arriving with velocity -speed (point I0 of Fig. 4.2a): ``floor_impulse``
+    of that arrival, 2 m V0 for an elastic bounce and m V0 for a Ka-runch."""
+    inputs.real(speed, "speed")
+    if speed < 0:
+        raise ValueError(f"speed must not be negative, got {speed!r}")
+    return floor_impulse(m, -speed, restitution)
+
+
 @dataclass(frozen=True)
 class BangChanges:
     """What one elastic bang between the balls changes: momentum and kinetic energy (ICM)."""
@@ -279,6 +289,19 @@ def sagitta_denominator(spot_radius: Any, ball_radius: Any) -> Any:
         raise ValueError("spot_radius must be smaller than ball_radius")
     depth = big - math.sqrt(big * big - r * r)
     return r * r / (big * depth)
+
+
+def sagitta_small_spot_depth(spot_radius: Any, ball_radius: Any) -> Any:
+    """Depth d of a flat spot of radius r on a ball of radius R to leading order in r/R: the
+    saggital approximation of Fig. 4.1.
+
+    Exactly d = R - sqrt(R^2 - r^2) = r^2 / (R + sqrt(R^2 - r^2)) (multiplying by the
+    conjugate); for r << R the root is R itself, which leaves r^2 over R + R. Plain operators:
+    exact for Fraction inputs.
+    """
+    r = inputs.positive(spot_radius, "spot_radius")
+    big = inputs.positive(ball_radius, "ball_radius")
+    return r * r / (big + big)
 
 
 def figures_of_agreement(approximations: Sequence[Any], precise: Sequence[Any]) -> int:

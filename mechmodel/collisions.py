@@ -137,6 +137,13 @@ def kinetic_energy(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
     return sum(m * v * v for m, v in _pairs(masses, velocities)) / 2
 
 
+def kinetic_energy_change(m: Any, v_in: Any, v_fin: Any) -> Any:
+    """Change KE(v_fin) - KE(v_in) of the kinetic energy of one body of mass ``m`` whose velocity
+    goes from ``v_in`` to ``v_fin`` (finite mass): the work done on it, which is what the product
+    (3.3)·(3.4) of its momentum change and its IN-FIN average velocity multiplies out to."""
+    return kinetic_energy((m,), (v_fin,)) - kinetic_energy((m,), (v_in,))
+
+
 def center_of_mass_velocity(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
     """Velocity of the centre of momentum, V_COM = sum m v / sum m (eq. (2.5b))."""
     pairs = _pairs(masses, velocities)
@@ -256,6 +263,30 @@ def collide_reversed(
     return collide(m1, m2, -w1, -w2, restitution)
 
 
+def elastic_final_velocity(v_in: Any, v_com: Any) -> Any:
+    """Velocity after an elastic bang of a body that arrives at ``v_in`` while the centre of
+    momentum moves at ``v_com`` (the (4.1), (4.3) form of the IN-FIN balance (3.4)).
+
+    In the COM frame the partner's momentum is always the opposite of the body's, so the body
+    rebounds as off a wall moving with the COM: an elastic bounce off an infinite mass moving
+    at ``v_com`` (``collide``'s wall branch), whatever the partner's mass.
+    """
+    return collide(1, math.inf, v_in, v_com).v1
+
+
+def elastic_com_velocity(v_in: Any, v_fin: Any) -> Any:
+    """Velocity V_COM of the centre of momentum of an elastic bang that takes a body from
+    ``v_in`` to ``v_fin`` (the T-symmetry balance (3.4)).
+
+    It is the frame velocity u at which ``elastic_final_velocity(v_in, u)`` is ``v_fin``; that
+    final velocity is linear in u, so u is found from two evaluations of the collision law, not
+    from a closed form.
+    """
+    at_rest = elastic_final_velocity(v_in, 0)
+    per_unit = elastic_final_velocity(v_in, 1) - at_rest
+    return (v_fin - at_rest) / per_unit
+
+
 # -- lines, angles and energy ellipses (Fig. 3.1, (3.6)-(3.7)) -------------------------------
 
 
@@ -312,6 +343,14 @@ def ellipse_radii(m1: Any, m2: Any, energy: Any) -> tuple[Any, Any]:
     if energy < 0:
         raise ValueError(f"a kinetic energy is not negative, got {energy!r}")
     return (_sqrt(2 * energy / m1), _sqrt(2 * energy / m2))
+
+
+def energy_ellipse_form(m1: Any, m2: Any, energy: Any, v1: Any, v2: Any) -> Any:
+    """The left side V1^2/(2 KE/m1) + V2^2/(2 KE/m2) of the KE ellipse (3.7a) at the point
+    (v1, v2): the kinetic energy of that point over ``energy`` = KE > 0, so 1 on the ellipse,
+    less inside it and more outside."""
+    inputs.positive(energy, "energy")
+    return kinetic_energy((m1, m2), (v1, v2)) / energy
 
 
 def ellipse_point(a: Any, b: Any, angle: Any) -> tuple[Any, Any]:
@@ -485,6 +524,13 @@ def inertia_tensor(masses: Sequence[Any]) -> tuple[tuple[Any, ...], ...]:
     )
 
 
+def inertia_coefficient_count(n: Any) -> int:
+    """How many inertia coefficients M_jk a full inertia matrix of dimension ``n`` >= 1 holds
+    (the upgrade of (3.9a) to (3.9b)): counted over the rows of the n x n ``inertia_tensor``."""
+    size = inputs.count(n, "n", minimum=1)
+    return sum(len(row) for row in inertia_tensor([1] * size))
+
+
 def _check_matrix(inertia: Sequence[Sequence[Any]], n: int) -> None:
     if len(inertia) != n or any(len(row) != n for row in inertia):
         raise ValueError(f"the inertia matrix must be {n} x {n} to match the velocity vectors")
@@ -505,6 +551,16 @@ def quadratic_form(u: Sequence[Any], inertia: Sequence[Sequence[Any]], v: Sequen
         inputs.real(a, f"u[{i}]")
         inputs.real(b, f"v[{i}]")
     return sum(u[j] * inertia[j][k] * v[k] for j in range(len(u)) for k in range(len(v)))
+
+
+def ellipse_tensor_form(x: Any, y: Any, a: Any, b: Any) -> Any:
+    """The tensor form r . M . r of (3.15) for r = (x, y) and the ellipse tensor
+    M = diag(1/a^2, 1/b^2) of radii a, b > 0: 1 on the ellipse, as (3.7b)."""
+    inputs.positive(a, "a")
+    inputs.positive(b, "b")
+    zero = 0 * a
+    tensor = ((1 / (a * a), zero), (zero, 1 / (b * b)))
+    return quadratic_form((x, y), tensor, (x, y))
 
 
 @dataclass(frozen=True)

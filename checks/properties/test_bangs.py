@@ -35,6 +35,7 @@ from mechmodel.bangs import (
     bang_history,
     bang_possible,
     bangs_in_chain,
+    bounce_impulse,
     ceiling_bounce,
     ceiling_sequence,
     earth_recoil,
@@ -46,6 +47,7 @@ from mechmodel.bangs import (
     game_over_bang,
     mass_ratio,
     sagitta_denominator,
+    sagitta_small_spot_depth,
     state_after_bangs,
     velocities_after_bang,
     x2_final_locus_angle,
@@ -72,6 +74,20 @@ def test_floor_and_ceiling_reverse_the_velocity(v: Fraction, e: Fraction, m: Fra
     assert floor_bounce(v, e) == -e * v == ceiling_bounce(v, e)
     assert floor_impulse(m, v, e) == abs(m * floor_bounce(v, e) - m * v)
     assert floor_impulse(m, v) == 2 * floor_impulse(m, v, 0) == 2 * m * abs(v)
+
+
+@given(moderate_fraction_masses(), drop_speeds(), fraction_restitutions())
+@example(Fraction(3, 50), Fraction(1), Fraction(1))  # 2 M2 V0 of the 60 gm super-ball
+def test_a_ball_hitting_the_floor_at_speed_v0_gives_it_m_1_plus_e_v0(
+    m: Fraction, v0: Fraction, e: Fraction
+) -> None:
+    """A ball of mass m arriving at -V0 (point I0 of Fig. 4.2a) gives the floor the momentum
+    m (1 + e) V0: 2 M2 V0 for an elastic bounce, M2 V0 for a Ka-runch (after Fig. 4.2a); a
+    negative speed is refused."""
+    assert bounce_impulse(m, v0, e) == floor_impulse(m, -v0, e) == m * (1 + e) * v0
+    assert bounce_impulse(m, v0) == 2 * m * v0 == 2 * bounce_impulse(m, v0, 0)
+    with pytest.raises(ValueError, match="negative"):
+        bounce_impulse(m, -v0)
 
 
 @given(moderate_fraction_masses(), moderate_fraction_masses(), drop_speeds())
@@ -471,6 +487,24 @@ def test_the_flat_spot_depth_tends_to_r2_over_2_r(radius: float, spot: float) ->
     assert math.isclose(k, 1 + math.sqrt(1 - spot * spot), rel_tol=1e-9)
     with pytest.raises(ValueError, match="smaller"):
         sagitta_denominator(radius, radius)
+
+
+@given(
+    st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k),
+    st.floats(min_value=1e-6, max_value=0.999),
+)
+def test_the_saggital_depth_is_the_small_spot_limit(radius: float, spot: float) -> None:
+    """The saggital d = r^2/(2R) of Fig. 4.1 is below the exact depth R - sqrt(R^2 - r^2) by
+    less than a share (r/R)^2/2 of it, so it is the depth to leading order in r/R; with
+    Fraction inputs it is exact."""
+    r = spot * radius
+    approx = sagitta_small_spot_depth(r, radius)
+    exact = r * r / (radius + math.sqrt(radius * radius - r * r))  # R - sqrt(R^2 - r^2)
+    assert approx <= exact * (1 + REL)
+    assert exact - approx <= exact * (spot * spot / 2 + REL)
+    assert sagitta_small_spot_depth(Fraction(3), Fraction(5)) == Fraction(9, 10)
+    with pytest.raises(ValueError, match="positive"):
+        sagitta_small_spot_depth(0.0, radius)
 
 
 @given(

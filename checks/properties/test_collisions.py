@@ -37,11 +37,17 @@ from mechmodel.collisions import (
     collide_to_energy,
     collision_tensor_forms,
     com_frame,
+    elastic_com_velocity,
+    elastic_final_velocity,
     ellipse_point,
     ellipse_radii,
+    ellipse_tensor_form,
     energy_ellipse,
+    energy_ellipse_form,
+    inertia_coefficient_count,
     inertia_tensor,
     kinetic_energy,
+    kinetic_energy_change,
     line_angle,
     line_slope,
     momentum,
@@ -265,6 +271,91 @@ def test_the_com_frame_holds_no_momentum_and_the_ka_runch_energy(
     assert frame.energy == collide(m1, m2, v1, v2, 0).ke_lost
 
 
+# -- the IN-FIN balance (3.4), (4.1) and the KE it derives (3.5a) -------------------------------
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities())
+@example(*F(4, 1, 60, 10))  # (60, 10) -> (40, 90) about V_COM = 50 (Fig. 2.2)
+def test_an_elastic_bang_reflects_each_velocity_about_v_com_exactly(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
+) -> None:
+    """An elastic bang takes each body from v to 2 V_COM - v ((4.1), (4.3)), whatever the
+    masses, and V_COM is the IN-FIN average of either body (3.4): the wall model of
+    ``elastic_final_velocity`` and the root of ``elastic_com_velocity`` agree with the
+    collision law."""
+    hit = collide(m1, m2, v1, v2, 1)
+    v = center_of_mass_velocity((m1, m2), (v1, v2))
+    assert elastic_final_velocity(v1, v) == hit.v1
+    assert elastic_final_velocity(v2, v) == hit.v2
+    assert elastic_com_velocity(v1, hit.v1) == v == elastic_com_velocity(v2, hit.v2)
+
+
+@given(velocities(), velocities())
+def test_the_com_velocity_of_a_bounce_undoes_the_bounce(v: float, u: float) -> None:
+    """The frame velocity found from (v_in, v_fin) is the one that gives v_fin back (floats,
+    to rounding): the two functions are inverse in their second argument."""
+    fin = elastic_final_velocity(v, u)
+    assert close(elastic_com_velocity(v, fin), u, 4 * (abs(v) + abs(u)))
+    assert close(elastic_final_velocity(v, elastic_com_velocity(v, u)), u, 4 * (abs(v) + abs(u)))
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_restitutions())
+@example(*F(4, 1, 60, 10, 1))  # 1/2 4 (40^2 - 60^2) = -4000 = -(1/2 1 (90^2 - 10^2))
+def test_the_product_of_3_3_and_3_4_is_the_change_of_kinetic_energy(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, e: Fraction
+) -> None:
+    """A body's IN-FIN average velocity (3.4) times its momentum change (3.3) is the change
+    of its kinetic energy, and the two bodies' changes add up to minus the energy lost:
+    nothing for an elastic bang, so the FIN-sum equals the IN-sum (3.5a)."""
+    hit = collide(m1, m2, v1, v2, e)
+    changes = [
+        kinetic_energy_change(m, v_in, v_fin)
+        for m, v_in, v_fin in zip(hit.masses, hit.before, hit.after, strict=True)
+    ]
+    for change, m, v_in, v_fin in zip(changes, hit.masses, hit.before, hit.after, strict=True):
+        assert change == (v_in + v_fin) / 2 * (m * v_fin - m * v_in)
+    assert sum(changes) == -hit.ke_lost
+    if e == 1:
+        assert changes[0] == -changes[1]
+
+
+@given(masses(), masses(), velocities(), velocities(), angles())
+@example(4.0, 1.0, 60.0, 10.0, 0.0)  # the KE = 7,250 ellipse of Fig. 3.1
+def test_the_ellipse_forms_are_one_on_the_ellipse(
+    m1: float, m2: float, v1: float, v2: float, angle: float
+) -> None:
+    """The left side of (3.7a) is 1 at the point whose energy is KE, and at every point
+    (a cos s, b sin s) of the ellipse of radii (3.7b); so is the tensor form r.M.r of (3.15)
+    with M = diag(1/a^2, 1/b^2)."""
+    ke = kinetic_energy((m1, m2), (v1, v2))
+    assume(ke > 0)
+    assert close(energy_ellipse_form(m1, m2, ke, v1, v2), 1, 4)
+    a, b = ellipse_radii(m1, m2, ke)
+    x, y = ellipse_point(a, b, angle)
+    assert close(energy_ellipse_form(m1, m2, ke, x, y), 1, 8)
+    assert close(ellipse_tensor_form(x, y, a, b), 1, 8)
+    assert close(ellipse_tensor_form(v1, v2, a, b), 1, 8)
+
+
+@given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_masses())
+def test_the_ellipse_forms_scale_as_energies_exactly(
+    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction, energy: Fraction
+) -> None:
+    """(3.7a) at a point is its kinetic energy over KE; (3.15) at (x, y) is x^2/a^2 + y^2/b^2,
+    1 at (a, 0) and (0, b) and the form of (3.7a) when a^2 = 2 KE/m1, b^2 = 2 KE/m2."""
+    ratio = energy_ellipse_form(m1, m2, energy, v1, v2)
+    assert ratio == kinetic_energy((m1, m2), (v1, v2)) / energy
+    a, b = m1, m2  # any positive radii
+    assert ellipse_tensor_form(v1, v2, a, b) == v1 * v1 / (a * a) + v2 * v2 / (b * b)
+    assert ellipse_tensor_form(a, 0, a, b) == 1 == ellipse_tensor_form(0, b, a, b)
+    square_a, square_b = 2 * energy / m1, 2 * energy / m2
+    assert v1 * v1 / square_a + v2 * v2 / square_b == ratio
+    with pytest.raises(ValueError, match="positive"):
+        energy_ellipse_form(m1, m2, 0, v1, v2)
+    with pytest.raises(ValueError, match="positive"):
+        ellipse_tensor_form(v1, v2, 0, b)
+
+
 # -- reversal (Figs. 2.2-2.4) ---------------------------------------------------------------
 
 
@@ -458,6 +549,18 @@ def test_both_ka_whump_points_lie_on_the_momentum_line_and_the_reduced_ellipse(
 
 
 # -- tensor forms ((3.9)-(3.14)) -------------------------------------------------------------
+
+
+@given(st.integers(min_value=1, max_value=12))
+def test_a_full_inertia_matrix_has_n_squared_coefficients(n: int) -> None:
+    """The inertia matrix of n bodies is n x n: n^2 coefficients M_jk ((3.9a) to (3.9b)), of
+    which the diagonal ones are the masses; no dimension below 1."""
+    assert inertia_coefficient_count(n) == n * n
+    masses = [Fraction(j + 1) for j in range(n)]
+    tensor = inertia_tensor(masses)
+    assert [tensor[j][j] for j in range(n)] == masses
+    with pytest.raises(ValueError, match="at least 1"):
+        inertia_coefficient_count(0)
 
 
 @given(exact_symmetric_matrices(), exact_velocity_pairs(), exact_velocity_pairs())
