@@ -195,7 +195,7 @@ def verdict_summary(counts: Iterable[tuple[str, int]], errors: int | None) -> st
         if not n:
             continue
         if verdict == "erratum" and errors is not None:
-            parts.append(f"erratum {n} ({errors} errors)")
+            parts.append(f"erratum {n} ({errors} error{'' if errors == 1 else 's'})")
         else:
             parts.append(f"{verdict} {n}")
     return ", ".join(parts)
