@@ -482,3 +482,50 @@ def test_a_miss_without_a_reason_raises_the_banner(
     html = render_page(spoilt, result, catalog, None, figures=[])
     assert 'id="power-banner"' in html
     assert "the misprint -9" in html
+
+
+def test_a_partial_run_is_marked_with_its_scope_and_age(
+    appendix: tuple[Evaluation, ScanResult], catalog: Catalog
+) -> None:
+    """The invariants of a run that selected only some tests say so on the page, with the
+    selection; every record says when it was made and how long before the report."""
+    from datetime import UTC, datetime, timedelta
+
+    from reports.views import invariants_view
+
+    evaluation, result = appendix
+    record = {
+        **INVARIANTS,
+        "date": (datetime.now(UTC) - timedelta(hours=5)).isoformat(timespec="seconds"),
+        "scope": {"partial": True, "selection": "-k 'momentum'", "collected": 1},
+    }
+    html = render_page(evaluation, result, catalog, record, figures=[])
+    assert 'id="partial-run"' in html
+    assert "-k &#39;momentum&#39;" in html
+    assert "5 hours before this report" in html
+    whole = {**record, "scope": {"partial": False, "selection": "", "collected": 1}}
+    assert 'id="partial-run"' not in render_page(evaluation, result, catalog, whole, figures=[])
+    view = invariants_view(record, now=datetime.now(UTC) + timedelta(days=3))
+    assert view is not None
+    assert view["age"] == "3 days"
+
+
+def test_the_recorder_says_what_a_run_selected(tmp_path: Path) -> None:
+    from checks.properties.recorder import InvariantRecorder
+
+    def recorder(args: list[str], keyword: str = "", markexpr: str = "") -> InvariantRecorder:
+        config = types.SimpleNamespace(
+            option=types.SimpleNamespace(keyword=keyword, markexpr=markexpr),
+            rootpath=tmp_path,
+            args=args,
+            getini=lambda name: ["checks"],
+        )
+        return InvariantRecorder(config)  # type: ignore[arg-type]
+
+    assert recorder(["checks"]).scope() == {"partial": False, "selection": ""}
+    assert recorder(["checks"], keyword="momentum").scope() == {
+        "partial": True,
+        "selection": "-k 'momentum'",
+    }
+    assert recorder(["checks/properties/test_towers.py"]).scope()["partial"]
+    assert recorder(["checks"], markexpr="properties").scope()["selection"] == "-m 'properties'"

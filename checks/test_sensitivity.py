@@ -80,9 +80,7 @@ class _Probe:
 def test_models_move_with_their_inputs(catalog: Catalog) -> None:
     refs = {c.id: {r for v in c.args.values() for r in claim_refs(v)} for _, c in catalog.claims()}
     # a formula claim's inputs are its symbols, compared at generic points (test_formulas)
-    with_inputs = [
-        c for _, c in catalog.claims() if c.model and refs[c.id] and c.kind != "formula"
-    ]
+    with_inputs = [c for _, c in catalog.claims() if c.model and refs[c.id] and c.kind != "formula"]
     sample = with_inputs
     if len(sample) > SAMPLE:
         sample = random.Random(0).sample(with_inputs, SAMPLE)
