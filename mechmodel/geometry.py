@@ -291,6 +291,13 @@ def unit_circle_segments(angle: Any, radius: Any = 1) -> UnitCircleSegments:
     return UnitCircleSegments(angle, radius)
 
 
+def complement_segments(angle: Any, radius: Any = 1) -> UnitCircleSegments:
+    """The trigonometric segments of the complement σc = π/2 - σ of ``angle`` on a circle of
+    radius r: the triangle of Fig. 1.4a seen with its legs swapped, so that each ratio of σc is
+    a co-ratio of σ (line 1175: tan σc = cot σ, tan σ = cot σc)."""
+    return unit_circle_segments(complement(angle), radius)
+
+
 @dataclass(frozen=True)
 class RightTriangle:
     """Sides of a right triangle: base b, altitude a, hypotenuse r."""
@@ -552,6 +559,14 @@ def vibration_offset(translational: Any, rotational: Any) -> int:
     """The count subtracted from N times the coefficient: the molecule's own translations and
     rotations, which are not vibrations (the 6 = 3 + 3 of 3N - 6)."""
     return inputs.count(translational, "translational") + inputs.count(rotational, "rotational")
+
+
+def vibrational_modes(atoms: Any, translational: Any, rotational: Any) -> int:
+    """Vibrational degrees of freedom of a molecule of ``atoms`` atoms, not all on one line:
+    the N atoms move in N times as many dimensions as a body has translational degrees of
+    freedom, less the molecule's own rigid translations and rotations (Landscape 1.2: an N-atom
+    molecule has 3N - 6)."""
+    return vibration_formula(translational, rotational).modes(atoms)
 
 
 def precision_parts(order: Any) -> int:

@@ -22,6 +22,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
+import mpmath
+
 from mechmodel import inputs
 from mechmodel.exact import exact_sqrt
 
@@ -103,6 +105,68 @@ def polar_products(length_a: Any, angle_a: Any, length_b: Any, angle_b: Any) -> 
     )
 
 
+@dataclass(frozen=True)
+class RelativeComponents:
+    """Components of each of two plane vectors on axes made of the other (Fig. 1.A.1b-c): on
+    the unit vector along A and on its perpendicular copy A↵ (A turned a quarter turn
+    counterclockwise), and likewise on B and B↵."""
+
+    b_along_a: float  # B_A, the A-longitudinal component of B
+    b_across_a: float  # B_A↵, the A-transverse component of B
+    a_along_b: float  # A_B, the B-longitudinal component of A
+    a_across_b: float  # A_B↵, the B-transverse component of A
+
+
+def relative_components(
+    length_a: Any, angle_a: Any, length_b: Any, angle_b: Any
+) -> RelativeComponents:
+    """The relative components of plane vectors A and B given by lengths and lab angles
+    (Fig. 1.A.1): each vector's Cartesian components dotted with the unit vector of the other
+    and with that unit vector turned counterclockwise by a quarter turn, (u_x, u_y) ->
+    (-u_y, u_x). No angle differences are taken: the projections come from the components."""
+    for x, name in ((length_a, "A"), (angle_a, "theta_A"), (length_b, "B"), (angle_b, "theta_B")):
+        inputs.real(x, name)
+    unit_a = [math.cos(angle_a), math.sin(angle_a)]
+    unit_b = [math.cos(angle_b), math.sin(angle_b)]
+    a = [length_a * c for c in unit_a]
+    b = [length_b * c for c in unit_b]
+
+    def turned(u: list[float]) -> list[float]:
+        return [-u[1], u[0]]
+
+    return RelativeComponents(
+        b_along_a=dot(b, unit_a),
+        b_across_a=dot(b, turned(unit_a)),
+        a_along_b=dot(a, unit_b),
+        a_across_b=dot(a, turned(unit_b)),
+    )
+
+
+def coriolis_acceleration(angular_speed: Any, speed: Any, angle: Any) -> float:
+    """Magnitude of the Coriolis acceleration of a body moving at ``speed`` v, at ``angle``
+    theta to the rotation axis, in a frame turning at ``angular_speed`` omega (line 16508).
+
+    Computed from the motion, not from a formula: a free body crossing the axis moves on the
+    straight line X(t) = v t of an inertial frame; its position in the rotating frame is that
+    line turned back by the angle omega t about the axis, and its apparent acceleration is the
+    second time derivative of that position at t = 0 (mpmath.diff). On the axis the
+    centrifugal acceleration vanishes, so what remains is the Coriolis acceleration alone.
+    """
+    inputs.real(angular_speed, "angular_speed")
+    inputs.real(speed, "speed")
+    inputs.real(angle, "angle")
+    w, v, th = (mpmath.mpf(x) for x in (angular_speed, speed, angle))
+    across, along = v * mpmath.sin(th), v * mpmath.cos(th)
+
+    def seen(t: Any, k: int) -> Any:
+        x, y, z = across * t, 0 * t, along * t  # the inertial path through the axis
+        c, s = mpmath.cos(w * t), mpmath.sin(w * t)
+        return (c * x + s * y, -s * x + c * y, z)[k]
+
+    acceleration = [mpmath.diff(lambda t, k=k: seen(t, k), 0, 2) for k in range(DIMENSIONS)]
+    return float(mpmath.sqrt(sum(a * a for a in acceleration)))
+
+
 def determinant(matrix: Sequence[Sequence[Any]]) -> Any:
     """det U = sum epsilon_{i j k ...} U_1i U_2j U_3k ... over all index tuples (1.A.5)."""
     rows = [list(r) for r in matrix]
@@ -181,6 +245,21 @@ def heron_area_squared(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> 
     if isinstance(numerator, int | Fraction):
         return Fraction(numerator) / 16
     return numerator / 16
+
+
+def triangle_area(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any]) -> float:
+    """Area of the plane triangle with vertices p, q, r, by Heron's formula (the square root
+    of ``heron_area_squared``); it knows nothing of bases, altitudes or cross products."""
+    return math.sqrt(max(0.0, float(heron_area_squared(p, q, r))))
+
+
+def sum_triangle_area(length_a: Any, length_b: Any, angle: Any) -> float:
+    """Area of the sum triangle (0, A, A + B) of Fig. 1.A.2c for vectors of lengths A and B at
+    ``angle`` theta from A to B, by Heron's formula from its vertices (A along the x-axis)."""
+    for x, name in ((length_a, "A"), (length_b, "B"), (angle, "theta")):
+        inputs.real(x, name)
+    tip = [length_a + length_b * math.cos(angle), length_b * math.sin(angle)]
+    return triangle_area([0.0, 0.0], [length_a, 0.0], tip)
 
 
 @dataclass(frozen=True)

@@ -35,6 +35,7 @@ from mechmodel.geometry import (
     chord,
     clock_angle,
     complement,
+    complement_segments,
     degrees_of_freedom,
     doubled_clock_points,
     function_range,
@@ -58,6 +59,7 @@ from mechmodel.geometry import (
     turn_angle,
     unit_circle_segments,
     vibration_formula,
+    vibrational_modes,
     whirling_rectangles,
 )
 
@@ -130,6 +132,22 @@ def test_tangent_is_cotangent_of_the_complement(sigma: float) -> None:
     s = unit_circle_segments(sigma)
     c = unit_circle_segments(complement(sigma))
     assert close(s.tangent, c.cotangent)
+
+
+@given(oblique_angles(), lengths())
+@example(1.0, 1.0)
+def test_the_complement_swaps_each_ratio_with_its_co_ratio(sigma: float, r: float) -> None:
+    """The segments of σc = π/2 - σ are those of σ with the legs swapped: base and altitude,
+    tangent and cotangent, secant and cosecant trade places, so tan σc = cot σ = 1/tan σ
+    (line 1175)."""
+    s = unit_circle_segments(sigma, r)
+    c = complement_segments(sigma, r)
+    assert close(c.base, s.altitude, r * sigma, r * math.pi)
+    assert close(c.altitude, s.base, r * sigma, r * math.pi)
+    assert close(c.tangent, s.cotangent)
+    assert close(c.cotangent, s.tangent)
+    assert close(c.secant, s.cosecant)
+    assert close(c.tangent * s.tangent, r * r)
 
 
 @given(angles())
@@ -472,6 +490,21 @@ def test_degrees_of_freedom_add_up(atoms: int) -> None:
     3N - 6 vibrational (Landscape 1.2)."""
     formula = vibration_formula(3, 3)
     assert degrees_of_freedom([3, 3, formula.modes(atoms)]) == 3 * atoms
+
+
+@given(
+    molecule_sizes(), st.integers(min_value=1, max_value=4), st.integers(min_value=0, max_value=6)
+)
+@example(3, 3, 3)  # water: 3 vibrations
+def test_vibrations_are_what_the_rigid_motions_leave(
+    atoms: int, translational: int, rotational: int
+) -> None:
+    """N atoms moving in t dimensions have t N coordinates; the rigid molecule's t translations
+    and r rotations take away t + r of them and the rest vibrate: each added atom brings t more
+    vibrations (Landscape 1.2: 3N - 6 for t = r = 3)."""
+    modes = vibrational_modes(atoms, translational, rotational)
+    assert modes + degrees_of_freedom([translational, rotational]) == translational * atoms
+    assert vibrational_modes(atoms + 1, translational, rotational) - modes == translational
 
 
 @given(angles())

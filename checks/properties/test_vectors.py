@@ -141,3 +141,63 @@ def test_heron_area_is_half_the_cross_product_anywhere(
     as_float = vectors.heron_area_squared(*([float(x) for x in p] for p in (a, b, c)))
     sides = max(abs(float(x)) for p in (a, b, c) for x in p) ** 4
     assert abs(as_float - float(area_sq)) <= 1e-12 * (1 + sides)
+
+
+@given(
+    st.floats(min_value=0.01, max_value=100),
+    st.floats(min_value=-7, max_value=7),
+    st.floats(min_value=0.01, max_value=100),
+    st.floats(min_value=-7, max_value=7),
+)
+@example(1.0, 0.0, 1.0, math.pi / 2)  # B a quarter turn ahead of A: B_A↵ = B, A_B↵ = -A
+def test_relative_components_give_the_products(la, ta, lb, tb) -> None:
+    """On axes made of the other vector (Fig. 1.A.1b-c) each vector keeps its length, the
+    longitudinal components give A . B = A B_A = B A_B, and the transverse ones give
+    A x B = A B_A↵ = -B A_B↵: cross products are anti-reflexive (A x B = -B x A)."""
+    a = (la * math.cos(ta), la * math.sin(ta))
+    b = (lb * math.cos(tb), lb * math.sin(tb))
+    c = vectors.relative_components(la, ta, lb, tb)
+    scale = 1e-12 * (1 + la * lb) * 10
+    assert abs(c.b_along_a**2 + c.b_across_a**2 - lb**2) <= scale * (1 + lb / la)
+    assert abs(c.a_along_b**2 + c.a_across_b**2 - la**2) <= scale * (1 + la / lb)
+    assert abs(la * c.b_along_a - vectors.dot(a, b)) <= scale
+    assert abs(lb * c.a_along_b - vectors.dot(a, b)) <= scale
+    assert abs(la * c.b_across_a - vectors.plane_cross(a, b)) <= scale
+    assert abs(lb * c.a_across_b + vectors.plane_cross(a, b)) <= scale
+
+
+@given(
+    st.floats(min_value=0.01, max_value=100),
+    st.floats(min_value=0.01, max_value=100),
+    st.floats(min_value=0, max_value=math.pi),
+)
+@example(1.0, 1.0, math.pi / 2)
+@example(1.0, 1.0, 0.0)  # along the axis: no Coriolis acceleration
+def test_coriolis_acceleration_is_twice_omega_cross_v(w, v, theta) -> None:
+    """The apparent acceleration of a free body crossing the rotation axis is the Coriolis
+    acceleration -2 omega x v (no centrifugal part on the axis): its magnitude is
+    |2 omega x v| for omega along z and v at angle theta to it (line 16508)."""
+    omega = [0.0, 0.0, w]
+    vel = [v * math.sin(theta), 0.0, v * math.cos(theta)]
+    expected = 2 * math.sqrt(sum(x * x for x in vectors.cross(omega, vel)))
+    got = vectors.coriolis_acceleration(w, v, theta)
+    assert abs(got - expected) <= 1e-12 * (1 + 2 * w * v)
+
+
+@given(
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=3.0),
+    st.floats(min_value=-5, max_value=5),
+)
+def test_triangle_areas_by_heron(la, lb, theta, shear) -> None:
+    """Heron's formula from the vertices gives the sum triangle (0, A, A+B) of Fig. 1.A.2 half
+    the cross product |A x B|, and any triangle half its base times its altitude, wherever
+    its apex lies along the line parallel to the base."""
+    a = (la, 0.0)
+    b = (lb * math.cos(theta), lb * math.sin(theta))
+    half_cross = abs(vectors.plane_cross(a, b)) / 2
+    assert abs(vectors.sum_triangle_area(la, lb, theta) - half_cross) <= 1e-9 * (la + lb) ** 2
+    base, height = la, lb * math.sin(theta)
+    area = vectors.triangle_area([0.0, 0.0], [base, 0.0], [shear, height])
+    assert abs(area - base * height / 2) <= 1e-9 * (base + height + abs(shear)) ** 2
