@@ -298,4 +298,5 @@ def unicode_formula(text: str) -> str:
 
 
 def _replace_word(text: str, word: str, by: str) -> str:
-    return re.sub(rf"(?<![A-Za-z_]){word}(?![A-Za-z_])", by, text)
+    # a Greek name may carry an index or a capital label ("omega0", "thetaB"), not more letters
+    return re.sub(rf"(?<![A-Za-z_]){word}(?![a-z_])", by, text)
