@@ -209,3 +209,21 @@ class Meta(_Strict):
     lines: Annotated[list[Line], Field(min_length=2, max_length=2)]
     complete: bool
     schema_: Literal[1] = Field(alias="schema")
+
+
+class ChapterFileSchema(_Strict):
+    """One catalog file as a whole: its header and its entries (for the JSON Schema)."""
+
+    meta: Meta
+    claim: list[Claim] = Field(default_factory=list)
+    excluded: list[Excluded] = Field(default_factory=list)
+    slip: list[Slip] = Field(default_factory=list)
+
+
+def json_schema() -> dict[str, object]:
+    """The JSON Schema of a catalog file (``reference/claims/chNN.toml`` read as TOML), from
+    these models: ``docs/catalog.schema.json`` is this, and a test keeps it so."""
+    schema = ChapterFileSchema.model_json_schema(by_alias=True)
+    schema["$schema"] = "https://json-schema.org/draft/2020-12/schema"
+    schema["title"] = "bangcheck catalog file (schema 1, revision 2)"
+    return schema
