@@ -12,26 +12,25 @@ model's binary float are compared without any rounding of either. Irrational pri
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass
 from decimal import Decimal, InvalidOperation
 from fractions import Fraction
 
 import mpmath
 
-from reference.tokens import normalize
+from reference.grammar import (
+    FORM_BARE_POWER,
+    FORM_CARET,
+    FORM_DECIMAL,
+    FORM_DOT_POWER,
+    FORM_E,
+    FORM_FRACTION,
+    FORM_PI,
+    FORM_ROOT,
+    normalize,
+)
 
 _MP_DIGITS = 50
-
-_DECIMAL = r"\d[\d,]*(?:\.\d+)?|\.\d+"
-_RE_POWER = re.compile(rf"(?P<mant>{_DECIMAL}|\(\d+/\d+\))[·⋅]10(?P<exp>[-+]\d+)")
-_RE_BARE_POWER = re.compile(r"10(?P<exp>-\d{1,2})")
-_RE_E = re.compile(rf"(?P<mant>{_DECIMAL}) ?[Ee](?P<exp>[-+]?\d+)")
-_RE_CARET = re.compile(rf"(?P<base>{_DECIMAL})\^(?P<exp>[-+]?\d+)(?:e(?P<scale>[-+]?\d+))?")
-_RE_FRACTION = re.compile(r"(?P<p>\d+)/(?P<q>\d+)")
-_RE_PI = re.compile(r"(?P<a>\d*)π(?:/(?P<b>\d+))?|(?P<c>\d+)/π")
-_RE_ROOT = re.compile(r"(?P<a>\d*)√(?P<r>\d+)(?:/(?P<b>\d+))?|(?P<c>\d+)/√(?P<s>\d+)")
-_RE_DECIMAL = re.compile(rf"(?:{_DECIMAL})")
 
 # Exact printed forms are compared within this many units in the last place of a double.
 EXACT_ULPS = 16
@@ -133,17 +132,17 @@ def parse_number(text: str, *, sigfigs: int | None = None, exact: bool = False) 
         half, is_exact, quantum = Fraction(0), True, None
     if negative:
         value = -value
-    irrational = bool(_RE_PI.fullmatch(s) or _RE_ROOT.fullmatch(s))
+    irrational = bool(FORM_PI.fullmatch(s) or FORM_ROOT.fullmatch(s))
     return Printed(raw, value, half, is_exact, absolute, mark, quantum, irrational)
 
 
 def _body(
     s: str, raw: str, sigfigs: int | None
 ) -> tuple[Fraction, Fraction, bool, Fraction | None]:
-    if _RE_DECIMAL.fullmatch(s):  # the commonest form first: nothing else is only digits
+    if FORM_DECIMAL.fullmatch(s):  # the commonest form first: nothing else is only digits
         dec = _decimal(s)
         return _inexact(Fraction(dec), _quantum(dec, sigfigs))
-    if m := _RE_POWER.fullmatch(s):
+    if m := FORM_DOT_POWER.fullmatch(s):
         scale = Fraction(10) ** int(m["exp"])
         mant = m["mant"]
         if mant.startswith("("):
@@ -151,13 +150,13 @@ def _body(
             return _exact(Fraction(int(p), int(q)) * scale)
         dec = _decimal(mant)
         return _inexact(Fraction(dec) * scale, _quantum(dec, sigfigs) * scale)
-    if m := _RE_BARE_POWER.fullmatch(s):
+    if m := FORM_BARE_POWER.fullmatch(s):
         return _exact(Fraction(10) ** int(m["exp"]))
-    if m := _RE_E.fullmatch(s):
+    if m := FORM_E.fullmatch(s):
         dec = _decimal(m["mant"])
         scale = Fraction(10) ** int(m["exp"])
         return _inexact(Fraction(dec) * scale, _quantum(dec, sigfigs) * scale)
-    if m := _RE_CARET.fullmatch(s):
+    if m := FORM_CARET.fullmatch(s):
         base_dec = _decimal(m["base"])
         exp = int(m["exp"])
         base = Fraction(base_dec)
@@ -168,18 +167,18 @@ def _body(
         h_base = _quantum(base_dec, sigfigs) / 2
         half = abs(exp) * abs(base) ** (exp - 1) * h_base * scale
         return value, half, False, 2 * half
-    if m := _RE_FRACTION.fullmatch(s):
+    if m := FORM_FRACTION.fullmatch(s):
         if int(m["q"]) == 0:
             raise NumberFormatError(f"zero denominator in {raw!r}")
         return _exact(Fraction(int(m["p"]), int(m["q"])))
     with mpmath.workdps(_MP_DIGITS):
-        if m := _RE_PI.fullmatch(s):
+        if m := FORM_PI.fullmatch(s):
             if m["c"]:
                 return _exact(_mp(mpmath.mpf(int(m["c"])) / mpmath.pi))
             a = int(m["a"]) if m["a"] else 1
             b = int(m["b"]) if m["b"] else 1
             return _exact(_mp(a * mpmath.pi / b))
-        if m := _RE_ROOT.fullmatch(s):
+        if m := FORM_ROOT.fullmatch(s):
             if m["c"]:
                 return _exact(_mp(int(m["c"]) / mpmath.sqrt(int(m["s"]))))
             a = int(m["a"]) if m["a"] else 1

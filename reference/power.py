@@ -22,16 +22,15 @@ A printed "±a" has no sign misprint. A misprint must be another string with ano
 from __future__ import annotations
 
 import itertools
-import re
 from collections import Counter, defaultdict
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Literal
 
 from reference.compare import SLACK, Context, Judgement, judge
+from reference.grammar import FORM_BARE_POWER, FORM_DECIMAL, FORM_DOT_POWER, FORM_E, normalize
 from reference.numbers import NumberFormatError, Printed, parse_number
 from reference.schema import Claim
-from reference.tokens import normalize
 
 MisprintClass = Literal["last-digit", "digit-swap", "decimal-shift", "sign", "power-of-ten"]
 CLASSES: tuple[MisprintClass, ...] = (
@@ -69,12 +68,6 @@ TARGETS: dict[MisprintClass, float] = {
 MIN_MISPRINTS = 200  # a class this large meets its ratio; a smaller one has no unexplained miss
 
 Form = Literal["decimal", "power", "fraction", "pi", "root", "caret"]
-
-_DECIMAL = re.compile(r"\d[\d,]*(?:\.\d+)?|\.\d+")
-_E = re.compile(rf"(?P<mant>{_DECIMAL.pattern})(?P<e> ?[Ee])(?P<exp>[-+]?\d+)")
-_DOT_POWER = re.compile(r"(?P<mant>.+?)(?P<dot>[·⋅]10)(?P<exp>[-+]\d+)")
-_BARE_POWER = re.compile(r"10(?P<exp>-\d{1,2})")
-_CARET = re.compile(r"(?P<base>[\d.,]+)\^(?P<exp>[-+]?\d+)")
 
 
 @dataclass(frozen=True)
@@ -189,7 +182,7 @@ def _exact_form_misprints(s: str) -> list[Misprint]:
 def number_form(text: str) -> Form:
     """The form of a printed number or ``means`` string, as the misprint classes see it."""
     _, s, _ = _split_sign(normalize(text).strip())
-    if _E.fullmatch(s) or _DOT_POWER.fullmatch(s) or _BARE_POWER.fullmatch(s):
+    if FORM_E.fullmatch(s) or FORM_DOT_POWER.fullmatch(s) or FORM_BARE_POWER.fullmatch(s):
         return "power"
     if "π" in s:
         return "pi"
@@ -204,18 +197,18 @@ def number_form(text: str) -> Form:
 
 def _body_misprints(s: str) -> list[Misprint]:
     """The misprints of an unsigned number body ``s`` (signs are added by ``misprints``)."""
-    if m := _E.fullmatch(s):
+    if m := FORM_E.fullmatch(s):
         mant, e, exp = m["mant"], m["e"], m["exp"]
         out = [Misprint(x.cls, x.text + e + exp) for x in _decimal_misprints(mant)]
         return out + [Misprint("power-of-ten", mant + e + str(int(exp) + k)) for k in (1, -1)]
-    if m := _DOT_POWER.fullmatch(s):
+    if m := FORM_DOT_POWER.fullmatch(s):
         mant, dot, exp = m["mant"], m["dot"], m["exp"]
         inner = _exact_form_misprints(mant) if mant.startswith("(") else _decimal_misprints(mant)
         out = [Misprint(x.cls, x.text + dot + exp) for x in inner]
         return out + [Misprint("power-of-ten", f"{mant}{dot}{int(exp) + k:+d}") for k in (1, -1)]
-    if m := _BARE_POWER.fullmatch(s):
+    if m := FORM_BARE_POWER.fullmatch(s):
         return [Misprint("power-of-ten", f"10{int(m['exp']) + k:+d}") for k in (1, -1)]
-    if _DECIMAL.fullmatch(s):
+    if FORM_DECIMAL.fullmatch(s):
         return _decimal_misprints(s)
     return _exact_form_misprints(s)
 

@@ -21,30 +21,31 @@ The rules (each is a test in ``checks/test_tokens.py`` on a real line of the boo
 - **pi and roots**: "π/2", "2π/3", "5π", "180/π", "√3/2", "√8", "2√2", "1/√2" are one token each.
   A bare π with no digit is not a number token.
 - **range**: "1285-1349" is two tokens (a hyphen after a digit is never a sign).
+
+The patterns are in ``reference.grammar``, beside those that read a token's value.
 """
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
-MINUS_SIGNS = "-−–"
+from reference.grammar import (
+    MINUS_SIGNS,
+    SCAN_BARE_POWER,
+    SCAN_DECIMAL,
+    SCAN_DOT_POWER,
+    SCAN_E_SUFFIX,
+    SCAN_FRACTION,
+    SCAN_FRACTION_POWER,
+    SCAN_MARK,
+    SCAN_PI,
+    SCAN_POINT_DECIMAL,
+    SCAN_ROOT,
+    normalize,
+)
+
 _SIGN_CONTEXT = " \t([{=,;"
 _POINT_CONTEXT = " \t([{=~"
-_DOT = "·⋅"
-
-# Alternatives tried at a token's first digit (or π, √, "("), longest forms first.
-_INT = r"(?:\d{1,3}(?:,\d{3,4}){3,}(?!\d)|\d{1,3}(?:,\d{3})+(?!\d)|\d+)"
-_FRACTION_POWER = re.compile(rf"\(\d+/\d+\)[{_DOT}]10[-−–+]\d+")
-_PI = re.compile(r"\d*π/\d+|\d+π|\d+/π")
-_ROOT = re.compile(r"\d*√\d+(?:/\d+)?|\d+/√\d+")
-_BARE_POWER = re.compile(r"10[-−–]\d{1,2}(?!\d|[.,]\d)")
-_FRACTION = re.compile(r"\d+/\d+(?!\d|\.\d)")
-_DECIMAL = re.compile(rf"{_INT}(?:\.\d+)?")
-_DOT_POWER = re.compile(rf"[{_DOT}]10[-−–+]\d+")
-_E_SUFFIX = re.compile(r" ?E[-+−]?\d+")
-_POINT_DECIMAL = re.compile(r"\.\d+[%°]?")
-_MARK = re.compile(r"[%°]")
 
 
 @dataclass(frozen=True, slots=True)
@@ -60,11 +61,6 @@ class Token:
     def norm(self) -> str:
         """The text with every minus and en dash written as ``-`` (for matching catalog strings)."""
         return normalize(self.text)
-
-
-def normalize(text: str) -> str:
-    """``text`` with the Unicode minus and the en dash written as ASCII ``-``."""
-    return text.replace("−", "-").replace("–", "-")
 
 
 def _glued_to_letter(line: str, pos: int) -> bool:
@@ -85,9 +81,9 @@ def _body_end(line: str, pos: int) -> int | None:
     """End of the number body starting at ``pos`` (a digit, π, √ or "("), or None."""
     glued = _glued_to_letter(line, pos)
     if line[pos] == "(":
-        m = _FRACTION_POWER.match(line, pos)
+        m = SCAN_FRACTION_POWER.match(line, pos)
         return m.end() if m else None
-    for pattern in (_PI, _ROOT):
+    for pattern in (SCAN_PI, SCAN_ROOT):
         m = pattern.match(line, pos)
         if m and any(c.isdigit() for c in m.group()):
             return m.end()
@@ -95,26 +91,26 @@ def _body_end(line: str, pos: int) -> int | None:
         return None
     before = line[pos - 1] if pos else ""
     if not glued and not (before and (before in ".:" or before.isdigit())):
-        m = _BARE_POWER.match(line, pos)
+        m = SCAN_BARE_POWER.match(line, pos)
         if m:
             return m.end()
     if not glued:
-        m = _FRACTION.match(line, pos)
+        m = SCAN_FRACTION.match(line, pos)
         if m:
             return m.end()
-    m = _DECIMAL.match(line, pos)
+    m = SCAN_DECIMAL.match(line, pos)
     if not m:
         return None
     end = m.end()
     mantissa_has_point = "." in m.group()
-    power = _DOT_POWER.match(line, end)
+    power = SCAN_DOT_POWER.match(line, end)
     if power:
         end = power.end()
     elif mantissa_has_point or not glued:
-        e_suffix = _E_SUFFIX.match(line, end)
+        e_suffix = SCAN_E_SUFFIX.match(line, end)
         if e_suffix:
             end = e_suffix.end()
-    mark = _MARK.match(line, end)
+    mark = SCAN_MARK.match(line, end)
     return mark.end() if mark else end
 
 
@@ -134,7 +130,7 @@ def tokenize_line(text: str, line: int = 0) -> list[Token]:
         end: int | None = None
         if text[pos] == "." and pos + 1 < len(text) and text[pos + 1].isdigit():
             if pos == 0 or text[pos - 1] in _POINT_CONTEXT + MINUS_SIGNS + "+±":
-                m = _POINT_DECIMAL.match(text, pos)
+                m = SCAN_POINT_DECIMAL.match(text, pos)
                 end = m.end() if m else None
         elif text[pos].isdigit() or text[pos] in "π√(":
             end = _body_end(text, pos)
