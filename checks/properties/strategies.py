@@ -581,3 +581,21 @@ def exact_square_matrices() -> st.SearchStrategy[list[list[int]]]:
             st.lists(st.integers(-9, 9), min_size=n, max_size=n), min_size=n, max_size=n
         )
     )
+
+
+def printed_decimals() -> st.SearchStrategy[str]:
+    """A number as the book prints it: a sign or none, digits with the point anywhere (or no
+    point), from "0" to "-98765.4321", never with a leading zero before other digits."""
+
+    def build(sign: bool, digits: str, point: int) -> str:
+        digits = digits.lstrip("0") or "0"
+        place = min(point, len(digits))
+        text = digits if place == 0 else f"{digits[:-place] or '0'}.{digits[-place:]}"
+        return f"-{text}" if sign and text.strip("0.") else text
+
+    return st.builds(
+        build,
+        st.booleans(),
+        st.text(alphabet="0123456789", min_size=1, max_size=9),
+        st.integers(0, 6),
+    )
