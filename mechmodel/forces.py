@@ -211,12 +211,21 @@ def isothermal_force_of_energy(energy: Any, gap: Any, m2: Any = 1) -> Any:
     return _isothermal(m2, speed, gap)
 
 
-def isothermal_gas_force(boltzmann: Any, temperature: Any, gap: Any) -> Any:
-    """Force of the one-atom gas on m1 at temperature T, N, with the book's KE = k T (6.4): the
-    1-D ideal gas law, F Y = 2 k T in the book's convention (it is k T with 1/2 m v^2 = kT/2)."""
+def thermal_kinetic_energy(boltzmann: Any, temperature: Any) -> Any:
+    """Mean kinetic energy of an atom moving in one dimension in equilibrium at temperature T,
+    J: k T / 2, by equipartition (each quadratic term of the energy, here 1/2 m v^2, holds
+    k T / 2 on average), with k Boltzmann's constant."""
     inputs.positive(boltzmann, "boltzmann")
     inputs.positive(temperature, "temperature")
-    return isothermal_force_of_energy(boltzmann * temperature, gap)
+    return boltzmann * temperature / 2
+
+
+def isothermal_gas_law(boltzmann: Any, temperature: Any, gap: Any) -> Any:
+    """F Y of the one-atom gas at temperature T, J: the bang force (6.4) of an atom with the
+    thermal kinetic energy, times the gap; the 1-D ideal gas law P V = N k T for N = 1 (the
+    product does not depend on the gap)."""
+    energy = thermal_kinetic_energy(boltzmann, temperature)
+    return isothermal_force_of_energy(energy, gap) * gap
 
 
 def isothermal_potential(m2: Any, speed: Any, gap: Any) -> Any:

@@ -274,10 +274,26 @@ def test_the_isothermal_force_depends_on_the_energy_alone(
     )
 
 
-@given(positive_quantities(), positive_quantities(), gaps())
-def test_the_one_atom_gas_law_is_twice_kt(k: float, t: float, y: float) -> None:
-    """F Y = 2 k T with the book's KE = k T (6.4): the 1-D Boyle law PV = 2kT."""
-    assert math.isclose(forces.isothermal_gas_force(k, t, y) * y, 2 * k * t, rel_tol=8 * REL)
+@given(positive_quantities(), positive_quantities(), positive_quantities())
+def test_a_one_dimensional_atom_holds_half_kt(k: float, t: float, m: float) -> None:
+    """Equipartition: the mean of 1/2 m v^2 over the 1-D Maxwell distribution
+    exp(-m v^2 / 2kT) is k T / 2 (Gauss-Hermite quadrature, exact for this polynomial)."""
+    from numpy.polynomial.hermite_e import hermegauss
+
+    nodes, weights = hermegauss(8)  # weight exp(-x^2/2): v = x sqrt(kT/m)
+    energies = [m * (x * math.sqrt(k * t / m)) ** 2 / 2 for x in nodes]
+    mean = math.fsum(w * e for w, e in zip(weights, energies, strict=True)) / math.fsum(weights)
+    assert math.isclose(forces.thermal_kinetic_energy(k, t), mean, rel_tol=1e-12)
+
+
+@given(positive_quantities(), positive_quantities(), gaps(), gaps())
+def test_the_one_atom_gas_law_is_kt_at_any_gap(k: float, t: float, y: float, other: float) -> None:
+    """F Y = k T for one atom in one dimension (the ideal gas law P V = N k T), whatever the
+    gap: the bang force 2 KE / Y (6.4) with the thermal KE = k T / 2."""
+    assert math.isclose(forces.isothermal_gas_law(k, t, y), k * t, rel_tol=8 * REL)
+    assert math.isclose(
+        forces.isothermal_gas_law(k, t, y), forces.isothermal_gas_law(k, t, other), rel_tol=8 * REL
+    )
 
 
 @given(fraction_quantities(), rationals(Fraction(-1, 2), Fraction(1, 2), 12), st.integers(1, 7))
