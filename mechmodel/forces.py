@@ -122,6 +122,21 @@ def bang_momentum_transfer(m2: Any, speed: Any, v_wall: Any) -> Any:
     return m2 * moving_wall_bounce(v_wall, speed) - (-m2 * speed)
 
 
+def speed_gain_rate(v_wall: Any, rate: Any) -> Any:
+    """Rate at which m2's speed grows, m/s^2: the speed one bang with the closing wall adds
+    (``moving_wall_bounce``, the same whatever m2's speed) times the bangs per second, ``rate``
+    (6.5a): dv2/dt = 2 v1 B."""
+    inputs.real(rate, "rate")
+    gain = moving_wall_bounce(v_wall, 0)  # m2 met at rest leaves with just the gain
+    return gain * rate
+
+
+def adiabatic_speed_growth(v_wall: Any, speed: Any, gap: Any) -> Any:
+    """dv2/dt of m2 between a wall closing at ``v_wall`` and the fixed wall at gap Y, m/s^2:
+    the gain per bang at the bang rate of (6.1b), 2 v1 v2 / 2Y (6.5a)-(6.5b)."""
+    return speed_gain_rate(v_wall, bang_rate(gap, speed))
+
+
 def thermal_speed(mass: Any, temperature: Any, boltzmann: Any) -> float:
     """Speed of a one-dimensional gas atom of ``mass`` at ``temperature``, m/s, with the book's
     KE = k T of (6.4): 1/2 m v^2 = k T, v = sqrt(2 k T / m) (the "typical atomic speeds")."""
@@ -180,6 +195,37 @@ def isothermal_force(m2: Any, speed: Any, gap: Any) -> ForceLaw:
     inputs.positive(gap, "gap")
     energy = m2 * speed * speed / 2
     return _law(lambda y, v: _isothermal(m2, v, y), gap, speed, energy)
+
+
+def isothermal_force_of_energy(energy: Any, gap: Any, m2: Any = 1) -> Any:
+    """Isothermal bang force on m1, N, when m2 has kinetic energy ``energy`` (6.4).
+
+    m2 of any mass ``m2`` moving at the speed that gives it that energy, sqrt(2 KE / m2),
+    pushes with bang rate times momentum per bang: the force depends on m2 and v2 only through
+    KE (F = 2 KE / Y).
+    """
+    inputs.positive(energy, "energy")
+    inputs.mass(m2, "m2")
+    inputs.positive(gap, "gap")
+    speed = math.sqrt(2 * energy / m2)
+    return _isothermal(m2, speed, gap)
+
+
+def thermal_kinetic_energy(boltzmann: Any, temperature: Any) -> Any:
+    """Mean kinetic energy of an atom moving in one dimension in equilibrium at temperature T,
+    J: k T / 2, by equipartition (each quadratic term of the energy, here 1/2 m v^2, holds
+    k T / 2 on average), with k Boltzmann's constant."""
+    inputs.positive(boltzmann, "boltzmann")
+    inputs.positive(temperature, "temperature")
+    return boltzmann * temperature / 2
+
+
+def isothermal_gas_law(boltzmann: Any, temperature: Any, gap: Any) -> Any:
+    """F Y of the one-atom gas at temperature T, J: the bang force (6.4) of an atom with the
+    thermal kinetic energy, times the gap; the 1-D ideal gas law P V = N k T for N = 1 (the
+    product does not depend on the gap)."""
+    energy = thermal_kinetic_energy(boltzmann, temperature)
+    return isothermal_force_of_energy(energy, gap) * gap
 
 
 def isothermal_potential(m2: Any, speed: Any, gap: Any) -> Any:
@@ -317,6 +363,44 @@ def opposed_isothermal_series(order: Any, gap: Any = 1) -> OpposedSeries:
     )
 
 
+@dataclass(frozen=True)
+class OpposedForces:
+    """The two opposed isothermal forces on m1 displaced x, as Taylor polynomials in x to a
+    given order (before (6.12)): ``left`` of f / (Y + x), ``right`` of f / (Y - x) and
+    ``total`` of their difference F_total, each evaluated at x (with the force constant f)."""
+
+    left: Any
+    right: Any
+    total: Any
+
+
+def opposed_isothermal_forces(
+    force_constant: Any, x: Any, order: Any, gap: Any = 1
+) -> OpposedForces:
+    """The series of ``opposed_isothermal_series`` to ``order``, times f and summed at x.
+
+    Plain operators: sympy symbols for f and x give the polynomials themselves.
+    """
+    series = opposed_isothermal_series(order, gap)
+
+    def value(coefficients: Sequence[Any]) -> Any:
+        return sum(force_constant * c * x**k for k, c in enumerate(coefficients))
+
+    return OpposedForces(value(series.left), value(series.right), value(series.total))
+
+
+def opposed_spring_constant(force_constant: Any, gap: Any) -> float:
+    """Spring constant of m1 between two isothermal gases of force constant f, N/m.
+
+    Each side pushes with f / (its space), the left one at Y + x and the right one at Y - x;
+    k = -dF_total/dx at x = 0, 2 f / Y^2 (6.12).
+    """
+    inputs.positive(force_constant, "force_constant")
+    inputs.positive(gap, "gap")
+    f = force_constant
+    return -slope(lambda x: f / (gap + x) - f / (gap - x), 0)
+
+
 def isothermal_spring_constant(m2: Any, speed: Any, gap: Any) -> float:
     """Spring constant of m1 between two isothermal gases, k = -dF_total/dx at x = 0, N/m.
 
@@ -325,8 +409,7 @@ def isothermal_spring_constant(m2: Any, speed: Any, gap: Any) -> float:
     inputs.mass(m2, "m2")
     inputs.positive(speed, "speed")
     inputs.positive(gap, "gap")
-    f = m2 * speed * speed
-    return -slope(lambda x: f / (gap + x) - f / (gap - x), 0)
+    return opposed_spring_constant(m2 * speed * speed, gap)
 
 
 def hooke_potential(k: Any, x: Any) -> Any:
@@ -370,6 +453,16 @@ def harmonic_period_times_frequency(k: Any, mass: Any) -> float:
     inputs.positive(k, "k")
     inputs.mass(mass, "mass")
     return oscillation_period(mass, k / 2, 2, 1) * math.sqrt(k / mass)
+
+
+def harmonic_period(omega: Any) -> float:
+    """Period of the harmonic oscillator of angular frequency omega, s (after (6.12)).
+
+    A unit mass on the spring k = omega^2: the turning-point integral of
+    ``oscillation_period`` for U = k x^2 / 2 (any amplitude: it does not depend on it).
+    """
+    inputs.positive(omega, "omega")
+    return oscillation_period(1, omega * omega / 2, 2, 1)
 
 
 @dataclass(frozen=True)

@@ -320,6 +320,28 @@ def mirror_angle_ratio(phi: Any) -> Any:
     return phi / mirror_angle(reflection(phi))
 
 
+def reflection_mirror_angle(phi: Any) -> float:
+    """Tilt (radians) of the mirror line of sigma_phi = sigma_A cos(phi) + sigma_B sin(phi)
+    (5.15c): the line the matrix leaves fixed, read off the matrix itself (Fig. 5.3c)."""
+    return mirror_angle(reflection(phi))
+
+
+def mirror_separation(turn: Any) -> float:
+    """Angle (radians) between the mirrors of sigma_A and sigma_turn, whose product
+    sigma_turn sigma_A is the rotation by ``turn`` (5.17a, Fig. 5.3d): measured from mirror to
+    mirror, in (-pi/2, pi/2]."""
+    return angle_between_mirrors(sigma_a(), reflection(turn))
+
+
+def translation_mirror_separation(translation: Any) -> Any:
+    """Distance between two parallel 1D mirrors whose product moves every point by
+    ``translation`` (p. 5.17): the product of reflections is linear in their separation, so the
+    separation is ``translation`` times separation per translation of any one pair."""
+    inputs.real(translation, "translation")
+    pair = mirror_pair_translation(0, 1)
+    return translation * pair.separation / pair.translation
+
+
 @dataclass(frozen=True)
 class MirrorTranslation:
     """Two 1D mirrors at x = p1 then x = p2: the product is a translation (p. 5.17)."""

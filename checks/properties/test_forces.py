@@ -245,3 +245,75 @@ def test_thermal_speed_carries_the_energy_kt(m: float, t: float, k: float) -> No
     """1/2 m v^2 = k T, the book's KE = kT of (6.4)."""
     v = forces.thermal_speed(m, t, k)
     assert math.isclose(m * v * v / 2, k * t, rel_tol=4 * REL)
+
+
+@given(fraction_quantities(), fraction_quantities(), fraction_quantities())
+def test_speed_grows_at_the_gain_per_bang_times_the_bang_rate(
+    v_wall: Fraction, speed: Fraction, gap: Fraction
+) -> None:
+    """dv2/dt = 2 v1 B = 2 v1 v2 / 2Y (6.5a), exactly: the gain of one bang, whatever m2's
+    speed, at the bang rate of (6.1b)."""
+    rate = forces.bang_rate(gap, speed)
+    assert forces.speed_gain_rate(v_wall, rate) == 2 * v_wall * rate
+    gain = forces.moving_wall_bounce(v_wall, speed) - speed
+    assert forces.speed_gain_rate(v_wall, rate) == gain * rate
+    assert forces.adiabatic_speed_growth(v_wall, speed, gap) == 2 * v_wall * speed / (2 * gap)
+
+
+@given(positive_quantities(), positive_quantities(), positive_quantities(), gaps())
+def test_the_isothermal_force_depends_on_the_energy_alone(
+    m2: float, other: float, v2: float, y: float
+) -> None:
+    """F = 2 KE / Y (6.4): m2 of any mass carrying the energy KE = 1/2 m2 v2^2 pushes as hard."""
+    energy = m2 * v2 * v2 / 2
+    force = forces.isothermal_force(m2, v2, y).force
+    assert math.isclose(forces.isothermal_force_of_energy(energy, y, m2), force, rel_tol=8 * REL)
+    assert math.isclose(forces.isothermal_force_of_energy(energy, y, other), force, rel_tol=8 * REL)
+    assert math.isclose(
+        forces.isothermal_force_of_energy(energy, y), 2 * energy / y, rel_tol=8 * REL
+    )
+
+
+@given(positive_quantities(), positive_quantities(), positive_quantities())
+def test_a_one_dimensional_atom_holds_half_kt(k: float, t: float, m: float) -> None:
+    """Equipartition: the mean of 1/2 m v^2 over the 1-D Maxwell distribution
+    exp(-m v^2 / 2kT) is k T / 2 (Gauss-Hermite quadrature, exact for this polynomial)."""
+    from numpy.polynomial.hermite_e import hermegauss
+
+    nodes, weights = hermegauss(8)  # weight exp(-x^2/2): v = x sqrt(kT/m)
+    energies = [m * (x * math.sqrt(k * t / m)) ** 2 / 2 for x in nodes]
+    mean = math.fsum(w * e for w, e in zip(weights, energies, strict=True)) / math.fsum(weights)
+    assert math.isclose(forces.thermal_kinetic_energy(k, t), mean, rel_tol=1e-12)
+
+
+@given(positive_quantities(), positive_quantities(), gaps(), gaps())
+def test_the_one_atom_gas_law_is_kt_at_any_gap(k: float, t: float, y: float, other: float) -> None:
+    """F Y = k T for one atom in one dimension (the ideal gas law P V = N k T), whatever the
+    gap: the bang force 2 KE / Y (6.4) with the thermal KE = k T / 2."""
+    assert math.isclose(forces.isothermal_gas_law(k, t, y), k * t, rel_tol=8 * REL)
+    assert math.isclose(
+        forces.isothermal_gas_law(k, t, y), forces.isothermal_gas_law(k, t, other), rel_tol=8 * REL
+    )
+
+
+@given(fraction_quantities(), rationals(Fraction(-1, 2), Fraction(1, 2), 12), st.integers(1, 7))
+def test_the_opposed_force_series_approach_the_forces(f: Fraction, x: Fraction, order: int) -> None:
+    """f [1 - x + x^2 - ...] and f [1 + x + x^2 + ...] at unit gap (before (6.12)) are the
+    geometric series of f/(1 + x) and f/(1 - x): each misses by its next term over 1 -/+ x,
+    exactly; the total is their difference."""
+    series = forces.opposed_isothermal_forces(f, x, order, Fraction(1))
+    assert f / (1 + x) - series.left == f * (-x) ** (order + 1) / (1 + x)
+    assert f / (1 - x) - series.right == f * x ** (order + 1) / (1 - x)
+    assert series.total == series.left - series.right
+
+
+@given(positive_quantities(), gaps())
+def test_the_spring_constant_of_two_gases_is_twice_f(f: float, y: float) -> None:
+    """k = -dF_total/dx at x = 0 is 2 f / Y^2 for F_total = f/(Y + x) - f/(Y - x) (6.12)."""
+    assert math.isclose(forces.opposed_spring_constant(f, y), 2 * f / (y * y), rel_tol=8 * REL)
+
+
+@given(positive_quantities())
+def test_the_harmonic_period_is_two_pi_over_omega(omega: float) -> None:
+    """tau = 2 pi / omega from the turning-point integral (after (6.12))."""
+    assert math.isclose(forces.harmonic_period(omega) * omega, 2 * math.pi, rel_tol=8 * REL)

@@ -55,6 +55,7 @@ from mechmodel.operators import (
     mirror_angle_ratio,
     mirror_pair_rotation,
     mirror_pair_translation,
+    mirror_separation,
     multiple_bang_angle,
     negated,
     pauli_common_square,
@@ -64,6 +65,7 @@ from mechmodel.operators import (
     quaternion_square,
     quaternion_unit,
     reflection,
+    reflection_mirror_angle,
     rms_speed_ratio,
     rotation,
     rotation_angle,
@@ -80,6 +82,7 @@ from mechmodel.operators import (
     sigma_product,
     sigma_rotation_angle,
     square_scalar,
+    translation_mirror_separation,
 )
 
 pytestmark = pytest.mark.properties
@@ -295,6 +298,37 @@ def test_two_parallel_mirrors_translate_by_twice_their_separation(
     assert t.separation == p2 - p1
     assert 2 * p2 - (2 * p1 - x) == x + t.translation
     assert t.ratio == 2
+
+
+@given(mirror_angles())
+def test_the_mirror_of_sigma_phi_is_tilted_at_half_phi(phi: float) -> None:
+    """sigma_phi leaves fixed the line at phi/2 (5.15c, Fig. 5.3c): the unit vector along it is
+    its own image."""
+    tilt = reflection_mirror_angle(phi)
+    assert abs(tilt - phi / 2) <= REL
+    along = (math.cos(tilt), math.sin(tilt))
+    image = apply(reflection(phi), along)
+    assert all(abs(a - b) <= 4 * REL for a, b in zip(image, along, strict=True))
+
+
+@given(mirror_angles())
+def test_the_mirrors_of_a_rotation_are_half_its_angle_apart(turn: float) -> None:
+    """sigma_turn sigma_A is the rotation by turn (5.17a), and the two mirrors are turn/2 apart:
+    a rotation angle is twice the angle between the mirrors (p. 5.16)."""
+    assert (
+        abs(math.remainder(mirror_pair_rotation(0, mirror_separation(turn)) - turn, 2 * math.pi))
+        <= 1e-11
+    )
+    assert abs(mirror_separation(turn) - turn / 2) <= REL
+
+
+@given(fraction_velocities(), fraction_velocities())
+def test_parallel_mirrors_half_a_translation_apart_make_it(p1: Fraction, a: Fraction) -> None:
+    """Two 1D mirrors a/2 apart translate by a (p. 5.17), exactly."""
+    assume(a != 0)
+    d = translation_mirror_separation(a)
+    assert d == a / 2
+    assert mirror_pair_translation(p1, p1 + d).translation == a
 
 
 @given(mirror_angles(), mirror_angles())
