@@ -53,6 +53,11 @@ def restatement_problem(excluded: Excluded, claim: Claim) -> str | None:
     pointed = pointed_claim(excluded)
     assert pointed is not None
     word = pointed[0]
+    if claim.kind == "formula":  # a formula has no one value: the digits must be in it
+        piece = significant_digits(excluded.means or excluded.token or "")
+        if piece not in _digits(claim.expression or ""):
+            return f"its digits {piece!r} are not in the formula {claim.expression!r}"
+        return None
     scale = _scale(excluded, claim)
     if scale is None:
         return f"unit {excluded.unit or claim.unit!r} cannot be converted to {claim.unit!r}"

@@ -260,8 +260,10 @@ class _Checker:
             except NumberFormatError as err:
                 if c.means is None:
                     add("printed", f"{err}; a garbled number needs 'means' and 'garble'")
-        if (c.means is None) != (c.garble is None):
+        if (c.means is None) != (c.garble is None) and c.printed is not None:
             add("garble" if c.means else "means", "'means' and 'garble' go together")
+        if c.printed is None and c.garble is not None:
+            add("garble", "an error with no number token has nothing garbled: 'means' alone")
         if c.means is not None:
             if c.note is None:
                 add("note", "a 'means' needs a note citing the evidence")
