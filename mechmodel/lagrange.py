@@ -1213,8 +1213,14 @@ def gradient_potential(matrix: Sequence[Sequence[Any]], vector: Sequence[Any]) -
         ),
         Laurent(),
     )
-    antiderivative = field_dot_v.integrate("t")
-    return antiderivative.substitute("t", 1).evaluate(names)
+    form = field_dot_v.integrate("t").substitute("t", 1)
+    total: Any = 0
+    for key, c in form.terms.items():  # the Fraction times the values: exact where they are
+        term: Any = c
+        for name, e in key:
+            term = term * names[name] ** e
+        total = total + term
+    return total
 
 
 def polar_lagrangian(
