@@ -1237,6 +1237,33 @@ def gradient_potential(matrix: Sequence[Sequence[Any]], vector: Sequence[Any]) -
     return total
 
 
+def metric_kinetic_energy(mass: Any, metric: Sequence[Sequence[Any]], rates: Sequence[Any]) -> Any:
+    """Kinetic energy of one particle moving at the generalized velocities q' in coordinates
+    of covariant metric g (12.31), J or scaled: any Jacobian J with J^T J = g gives the same
+    Cartesian speed, so take the Cholesky factor of g (upper triangular, positive diagonal),
+    form the Cartesian velocity v = J q' (12.19) and T = M v.v/2 (12.23). ``ValueError`` for a
+    metric that is not symmetric and positive definite. Floats."""
+    inputs.mass(mass)
+    n = len(rates)
+    if len(metric) != n or any(len(row) != n for row in metric):
+        raise ValueError("need an n x n metric and n rates")
+    g = [[float(inputs.real(x, "metric")) for x in row] for row in metric]
+    q = [float(inputs.real(x, "rate")) for x in rates]
+    if any(g[i][j] != g[j][i] for i in range(n) for j in range(i)):
+        raise ValueError("a metric is symmetric")
+    factor = [[0.0] * n for _ in range(n)]  # factor[i][j], i <= j: g = factor^T factor
+    for i in range(n):
+        pivot = g[i][i] - sum(factor[k][i] ** 2 for k in range(i))
+        if pivot <= 0:
+            raise ValueError("a metric is positive definite")
+        diagonal = factor[i][i] = math.sqrt(pivot)
+        for j in range(i + 1, n):
+            rest = g[i][j] - sum(factor[k][i] * factor[k][j] for k in range(i))
+            factor[i][j] = rest / diagonal
+    velocity = [sum(factor[i][j] * q[j] for j in range(n)) for i in range(n)]
+    return kinetic_energy([mass] * n, velocity)
+
+
 def polar_lagrangian(
     mass: Any, r: Any, rdot: Any, phidot: Any, potential: Any = 0, phi: Any = 0
 ) -> Any:

@@ -842,3 +842,32 @@ def test_turning_sequence_turns_by_one_step(
     assert lagrange.turning_sequence(first, nxt, 1) == pytest.approx(nxt, rel=1e-12, abs=1e-12)
     with pytest.raises(ValueError, match="non-zero"):
         lagrange.turning_sequence((0, 0), nxt, k)
+
+
+@given(
+    st.lists(st.floats(min_value=-3, max_value=3), min_size=4, max_size=4),
+    st.tuples(st.floats(min_value=-3, max_value=3), st.floats(min_value=-3, max_value=3)),
+    st.floats(min_value=0.1, max_value=10),
+)
+def test_metric_energy_is_the_cartesian_energy_of_any_jacobian(
+    entries: list[float], rates: tuple[float, float], mass: float
+) -> None:
+    """For any invertible Jacobian J the kinetic energy of the metric g = J^T J at the rates q'
+    is M |J q'|^2/2 (12.31): the energy depends on the coordinates only through g. In polar
+    coordinates it is the polar Lagrangian M (r'^2 + r^2 phi'^2)/2 (12.32). A metric that is
+    not positive definite is refused."""
+    j = [entries[:2], entries[2:]]
+    det = j[0][0] * j[1][1] - j[0][1] * j[1][0]
+    if abs(det) < 1e-2:
+        return
+    g = [[sum(j[k][m] * j[k][n] for k in range(2)) for n in range(2)] for m in range(2)]
+    g[1][0] = g[0][1]
+    v = [sum(j[k][m] * rates[m] for m in range(2)) for k in range(2)]
+    want = mass * (v[0] ** 2 + v[1] ** 2) / 2
+    size = mass * sum(x * x for x in entries) * sum(x * x for x in rates)
+    assert abs(lagrange.metric_kinetic_energy(mass, g, rates) - want) <= 1e-9 * (size + 1e-12)
+    r, phi = 0.5 + abs(entries[0]), entries[1]
+    polar = lagrange.metric_kinetic_energy(mass, lagrange.polar_metric(r, phi), rates)
+    assert _close(polar, lagrange.polar_lagrangian(mass, r, rates[0], rates[1], 0, phi))
+    with pytest.raises(ValueError, match="positive definite"):
+        lagrange.metric_kinetic_energy(mass, [[1.0, 2.0], [2.0, 1.0]], rates)
