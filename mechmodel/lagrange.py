@@ -22,7 +22,13 @@ Three kinds of computation:
   envelope, Jacobians, metrics, phases) in plain operators: exact for ``int`` and ``Fraction``
   inputs where no root or trigonometric function is needed, else floats.
 - **Numerical transforms**: the Legendre transform of any convex function by a bounded maximum
+  (scipy), the envelope of the projectile family as the highest trajectory over all elevations
   (scipy), and the action of a sampled path by the trapezoid rule.
+
+The formula claims of chapter 12 call these with generic numbers: the energy in any scaled
+coordinate, the Legendre pair, the generating function S and its angle derivative, the contact
+slope and abscissa, the gradient potential of M.v, the polar Lagrangian and forces, the
+Hamiltonian of one coordinate and the kinetic energy of a metric (through a Cholesky factor).
 
 Units are SI or the book's scaled units throughout; angles in radians.
 """
