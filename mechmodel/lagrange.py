@@ -22,7 +22,13 @@ Three kinds of computation:
   envelope, Jacobians, metrics, phases) in plain operators: exact for ``int`` and ``Fraction``
   inputs where no root or trigonometric function is needed, else floats.
 - **Numerical transforms**: the Legendre transform of any convex function by a bounded maximum
+  (scipy), the envelope of the projectile family as the highest trajectory over all elevations
   (scipy), and the action of a sampled path by the trapezoid rule.
+
+The formula claims of chapter 12 call these with generic numbers: the energy in any scaled
+coordinate, the Legendre pair, the generating function S and its angle derivative, the contact
+slope and abscissa, the gradient potential of M.v, the polar Lagrangian and forces, the
+Hamiltonian of one coordinate and the kinetic energy of a metric (through a Cholesky factor).
 
 Units are SI or the book's scaled units throughout; angles in radians.
 """
@@ -371,6 +377,49 @@ def root_mass_powers() -> RootMassPowers:
     return RootMassPowers(momentum=to_momentum, velocity=to_velocity)
 
 
+def scaled_coordinate_energy(
+    masses: Sequence[Any], coordinates: Sequence[Any], scale_power: Any
+) -> Any:
+    """The kinetic energy of bodies given by their mass-scaled coordinates u_k = m_k^s v_k:
+    each velocity is recovered as v_k = u_k m_k^-s and put into L(v) = sum m_k v_k^2/2 (12.3).
+    s = 1/2 gives the energy in the quasi-velocities V (12.1), s = 1 in the momenta p (12.2).
+    Exact for ``int`` and ``Fraction`` masses when m^s is rational (s = 1); ``scale_power`` is
+    a number or a Fraction.
+    """
+    _same_length(masses, coordinates)
+    s = Fraction(scale_power)
+    velocities = [
+        inputs.real(u, "coordinate") * _power(inputs.mass(m), -s)
+        for m, u in zip(masses, coordinates, strict=True)
+    ]
+    return kinetic_energy(masses, velocities)
+
+
+@dataclass(frozen=True)
+class RootMassMaps:
+    """The maps of (12.9) for one body of root mass R = sqrt(m): the momentum p that a unit
+    velocity maps to (the mass M) and the velocity v that a unit momentum maps back to
+    (the inverse mass M^-1)."""
+
+    mass: Any
+    inverse_mass: Any
+
+
+def root_mass_maps(root_mass: Any) -> RootMassMaps:
+    """Compose the root-mass scalings of (12.9) map by map: forward V = R v and p = R V, so a
+    unit velocity becomes the momentum R (R 1); back V = p / R and v = V / R, so a unit
+    momentum becomes the velocity (1 / R) / R. Exact for ``int`` and ``Fraction``."""
+    r = inputs.positive(root_mass, "root_mass")
+    if isinstance(r, int):
+        r = Fraction(r)
+    unit = r**0
+    quasi = r * unit  # V = R v at v = 1
+    momentum = r * quasi  # p = R V
+    back_quasi = unit / r  # V = p / R at p = 1
+    velocity = back_quasi / r  # v = V / R
+    return RootMassMaps(mass=momentum, inverse_mass=velocity)
+
+
 @dataclass(frozen=True)
 class EllipseSlopes:
     """Slopes (rise over run) of the lines of Fig. 12.1 in the three planes: the collision
@@ -459,6 +508,14 @@ def energy_ellipse_radii(masses: Sequence[Any], energy: Any) -> EllipseRadii:
     )
 
 
+def ellipse_radius_ratio(mass: Any, energy: Any = 1) -> Any:
+    """Ratio of the L(v)-ellipse radius to the H(p)-ellipse radius on one axis for a body of
+    mass ``mass`` (Fig. 12.2(d)-(e), where the mass is s times the unit mass): the two radii of
+    ``energy_ellipse_radii`` divided, sqrt(2E/m)/sqrt(2Em). Independent of the energy."""
+    radii = energy_ellipse_radii([mass], energy)
+    return radii.velocity[0] / radii.momentum[0]
+
+
 # -------------------------------------------------------------------------------------------
 # Legendre contact transformation: (12.10)-(12.13), Figs. 12.2-12.4, 12.9
 # -------------------------------------------------------------------------------------------
@@ -483,6 +540,34 @@ def legendre_quadratic() -> LegendreQuadratic:
     hamiltonian = p * v - lagrangian
     return LegendreQuadratic(
         lagrangian_vp=(lagrangian / (v * p)).value(), hamiltonian_pv=(hamiltonian / (p * v)).value()
+    )
+
+
+@dataclass(frozen=True)
+class QuadraticLegendrePair:
+    """The quadratic kinetic energy of one body as L(v) and as H(p), at a velocity v and the
+    momentum p it maps to (line 13716): its mass, L and H."""
+
+    mass: Any
+    lagrangian: Any
+    hamiltonian: Any
+
+
+def quadratic_legendre_pair(velocity: Any, momentum: Any) -> QuadraticLegendrePair:
+    """L and H of the quadratic kinetic energy whose slope dL/dv at ``velocity`` is
+    ``momentum``: p = dL/dv = m v (12.10a) fixes the mass m = p / v; then L = m v^2/2 (12.3)
+    and H = p^2/(2m) (12.4). Numerically L = H = p v/2 (line 13716) while H = p v - L
+    (12.11b). Exact for ``int`` and ``Fraction``; ``ValueError`` where p / v is not a
+    positive mass."""
+    v = inputs.real(velocity, "velocity")
+    p = inputs.real(momentum, "momentum")
+    if v == 0:
+        raise ValueError("the velocity must be non-zero to fix the mass p / v")
+    mass = inputs.mass(p / v, "mass p / v")
+    return QuadraticLegendrePair(
+        mass=mass,
+        lagrangian=kinetic_energy([mass], [v]),
+        hamiltonian=hamiltonian_free([mass], [p]),
     )
 
 
@@ -609,6 +694,120 @@ def contact_point(speed: Any, angle: Any, gravity: Any) -> tuple[Any, Any]:
         raise ValueError("the horizontal trajectory never contacts the envelope")
     x = speed**2 / (gravity * t)
     return x, envelope_height(x, speed, gravity)
+
+
+def _generating_polynomial() -> Laurent:
+    """S(v0, a : x, y) = -y + y(x) (12.15) as a Laurent polynomial in x, y, g, v0 and
+    c = cos a, s = sin a: y'' = -g integrated twice from y'(0) = v0 s, y(0) = 0, and the time
+    t = x/(v0 c) of x(t) = v0 c t put in (12.14)."""
+    g, v0, x = (Laurent.var(n) for n in ("g", "v0", "x"))
+    height_t = ((-g).integrate("t") + v0 * Laurent.var("s")).integrate("t")
+    height_x = height_t.substitute("t", x / (v0 * Laurent.var("c")))
+    return height_x - Laurent.var("y")
+
+
+def _fountain_values(x: Any, y: Any, speed: Any, angle: Any, gravity: Any) -> dict[str, Any]:
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    inputs.positive(speed, "speed")
+    inputs.real(angle, "angle")
+    inputs.positive(gravity, "gravity")
+    lib = _lib(angle)
+    c = lib.cos(angle)
+    if c == 0:
+        raise ValueError("a vertical launch has no trajectory y(x)")
+    return {"x": x, "y": y, "g": gravity, "v0": speed, "c": c, "s": lib.sin(angle)}
+
+
+def generating_solution(x: Any, y: Any, speed: Any, angle: Any, gravity: Any) -> Any:
+    """The contact generating function S(v0, a : x, y) = -y + y(x) of (12.15) at the point
+    (x, y), m: zero on the trajectory of speed v0 and elevation a, positive below it. From the
+    exact polynomial of ``_generating_polynomial``."""
+    return _generating_polynomial().evaluate(_fountain_values(x, y, speed, angle, gravity))
+
+
+def _angle_slope() -> Laurent:
+    """dS/da (12.16b) of the generating polynomial, reduced with sin^2 = 1 - cos^2."""
+    return angle_derivative(_generating_polynomial(), "c", "s")
+
+
+def generating_angle_derivative(x: Any, speed: Any, angle: Any, gravity: Any) -> Any:
+    """dS/da of the generating function (12.16b) at x for the elevation a, m/rad: the exact
+    angle derivative (cos' = -sin, sin' = cos) of the polynomial S, evaluated. It vanishes
+    where the trajectory of elevation a touches the envelope of the family."""
+    return _angle_slope().evaluate(_fountain_values(x, 0, speed, angle, gravity))
+
+
+def contact_tangent(x: Any, speed: Any, gravity: Any) -> Any:
+    """tan a of the trajectory that touches the envelope at the abscissa x (12.16c): dS/da
+    times cos^3 a is A c + B s with A, B free of the angle, so dS/da = 0 where
+    tan a = s/c = -A/B, evaluated at x, v0 and g. ``ValueError`` at x = 0."""
+    inputs.real(x, "x")
+    inputs.positive(speed, "speed")
+    inputs.positive(gravity, "gravity")
+    form = (_angle_slope() * Laurent.var("c", 3)).reduce_trig("c", "s")
+    cos_part = form.part("s", 0)
+    sin_part = form.part("s", 1) / Laurent.var("s")
+    a, b = cos_part / Laurent.var("c"), sin_part
+    if any(dict(k).get(n, 0) for k in (*a.terms, *b.terms) for n in ("c", "s")):
+        raise ValueError("dS/da is not of the form (A cos a + B sin a)/cos^3 a")
+    values = {"x": x, "g": gravity, "v0": speed}
+    denominator = b.evaluate(values)
+    if denominator == 0:
+        raise ValueError("no trajectory touches the envelope at x = 0")
+    return -a.evaluate(values) / denominator
+
+
+def contact_distance(speed: Any, angle: Any, gravity: Any) -> Any:
+    """The abscissa x where the trajectory of elevation a touches the envelope (12.16c): dS/da
+    is A x + B x^2 with A, B functions of the angle, zero at x = 0 and at x = -A/B.
+    ``ValueError`` for a horizontal launch (it never touches the envelope)."""
+    values = _fountain_values(0, 0, speed, angle, gravity)
+    slope = _angle_slope()
+    linear = slope.part("x", 1) / Laurent.var("x")
+    quadratic = slope.part("x", 2) / Laurent.var("x", 2)
+    if slope != linear * Laurent.var("x") + quadratic * Laurent.var("x", 2):
+        raise ValueError("dS/da is not of the form A x + B x^2")
+    b = quadratic.evaluate(values)
+    a = linear.evaluate(values)
+    if b == 0:
+        raise ValueError("the horizontal trajectory never contacts the envelope")
+    return -a / b
+
+
+def envelope_by_maximum(x: Any, speed: Any, gravity: Any) -> float:
+    """Height of the envelope of all trajectories of speed v0 at the abscissa x (12.17), m,
+    found without its formula: the highest y(x) of (12.14c) over all elevations, by a bounded
+    scalar search in the angle (at x = 0 the highest point of the vertical launch, by a search
+    in time). y(x) is a concave quadratic in tan a, so the maximum is unique, and the value is
+    insensitive to the error of the angle to second order: the relative error is about
+    (1e-8 v0^2/(g x))^2, below 1e-12 for |x| > 1e-2 v0^2/g. Floats."""
+    from scipy.optimize import minimize_scalar
+
+    inputs.real(x, "x")
+    inputs.positive(speed, "speed")
+    inputs.positive(gravity, "gravity")
+    x, v0, g = float(x), float(speed), float(gravity)
+    if x == 0:
+        up = math.pi / 2
+        end = 1.0
+        while trajectory_position(end, v0, up, g)[1] > 0:  # a time after the landing
+            end *= 2
+        result = minimize_scalar(
+            lambda t: -trajectory_position(t, v0, up, g)[1],
+            bounds=(0.0, end),
+            method="bounded",
+            options={"xatol": 1e-13 * end},
+        )
+        return trajectory_position(float(result.x), v0, up, g)[1]
+    edge = math.nextafter(math.pi / 2, 0.0)
+    result = minimize_scalar(
+        lambda a: -trajectory_height(x, v0, a, g),
+        bounds=(-edge, edge),
+        method="bounded",
+        options={"xatol": 1e-13},
+    )
+    return trajectory_height(x, v0, float(result.x), g)
 
 
 @dataclass(frozen=True)
@@ -1009,6 +1208,172 @@ def quadratic_derivative_slope() -> Fraction:
     return Laurent.var("q", 2).diff("q").only_coefficient()
 
 
+def gradient_potential(matrix: Sequence[Sequence[Any]], vector: Sequence[Any]) -> Any:
+    """The scalar F(v) whose gradient dF/dv^j is M_ij v^i, with F(0) = 0, for a symmetric
+    matrix M (line 15022): by the line integral F(v) = integral_0^1 (M.(t v)).v dt, done
+    exactly in t. Its q-derivative dF/dq is M_ij v^i dv^j/dq, the step from (12.24) to
+    Lagrange's form (12.25a). Exact for ``int`` and ``Fraction``; ``ValueError`` for a matrix
+    that is not square and symmetric (then no such F exists).
+    """
+    n = len(vector)
+    if len(matrix) != n or any(len(row) != n for row in matrix):
+        raise ValueError("need an n x n matrix and an n-vector")
+    for i in range(n):
+        for j in range(i):
+            if matrix[i][j] != matrix[j][i]:
+                raise ValueError("the field M.v has a potential only for a symmetric M")
+    t = Laurent.var("t")
+    names = {f"v{i}": vector[i] for i in range(n)}
+    names.update({f"m{i}_{j}": matrix[i][j] for i in range(n) for j in range(n)})
+    field_dot_v = sum(
+        (
+            Laurent.var(f"m{i}_{j}") * t * Laurent.var(f"v{i}") * Laurent.var(f"v{j}")
+            for i in range(n)
+            for j in range(n)
+        ),
+        Laurent(),
+    )
+    form = field_dot_v.integrate("t").substitute("t", 1)
+    total: Any = 0
+    for key, c in form.terms.items():  # the Fraction times the values: exact where they are
+        term: Any = c
+        for name, e in key:
+            term = term * names[name] ** e
+        total = total + term
+    return total
+
+
+def metric_kinetic_energy(mass: Any, metric: Sequence[Sequence[Any]], rates: Sequence[Any]) -> Any:
+    """Kinetic energy of one particle moving at the generalized velocities q' in coordinates
+    of covariant metric g (12.31), J or scaled: any Jacobian J with J^T J = g gives the same
+    Cartesian speed, so take the Cholesky factor of g (upper triangular, positive diagonal),
+    form the Cartesian velocity v = J q' (12.19) and T = M v.v/2 (12.23). ``ValueError`` for a
+    metric that is not symmetric and positive definite. Floats."""
+    inputs.mass(mass)
+    n = len(rates)
+    if len(metric) != n or any(len(row) != n for row in metric):
+        raise ValueError("need an n x n metric and n rates")
+    g = [[float(inputs.real(x, "metric")) for x in row] for row in metric]
+    q = [float(inputs.real(x, "rate")) for x in rates]
+    if any(g[i][j] != g[j][i] for i in range(n) for j in range(i)):
+        raise ValueError("a metric is symmetric")
+    factor = [[0.0] * n for _ in range(n)]  # factor[i][j], i <= j: g = factor^T factor
+    for i in range(n):
+        pivot = g[i][i] - sum(factor[k][i] ** 2 for k in range(i))
+        if pivot <= 0:
+            raise ValueError("a metric is positive definite")
+        diagonal = factor[i][i] = math.sqrt(pivot)
+        for j in range(i + 1, n):
+            rest = g[i][j] - sum(factor[k][i] * factor[k][j] for k in range(i))
+            factor[i][j] = rest / diagonal
+    velocity = [sum(factor[i][j] * q[j] for j in range(n)) for i in range(n)]
+    return kinetic_energy([mass] * n, velocity)
+
+
+def polar_lagrangian(
+    mass: Any, r: Any, rdot: Any, phidot: Any, potential: Any = 0, phi: Any = 0
+) -> Any:
+    """L = T - U (12.25b) of a particle at polar (r, phi) moving at rates (r', phi'): the
+    Cartesian velocity is J.q' by the polar Jacobian (12.19), (12.26), and
+    T = M (vx^2 + vy^2)/2 (12.23). Floats (the Jacobian takes the cosine and sine)."""
+    j = polar_jacobian(r, phi)
+    velocity = [j[k][0] * rdot + j[k][1] * phidot for k in range(2)]
+    return kinetic_energy([mass, mass], velocity) - potential
+
+
+def polar_terms(
+    mass: Any, r: Any, rdot: Any, phidot: Any, rddot: Any = 0, phiddot: Any = 0
+) -> PolarForces:
+    """The polar momenta and forces of (12.32)-(12.33), ``polar_forces``, at a state given by
+    its polar coordinate rates (the angle itself does not enter)."""
+    for value, name in ((rdot, "rdot"), (phidot, "phidot"), (rddot, "rddot"), (phiddot, "phiddot")):
+        inputs.real(value, name)
+    inputs.positive(r, "r")
+    return polar_forces(mass, PolarState(r, 0.0, rdot, phidot, rddot, phiddot))
+
+
+@dataclass(frozen=True)
+class PolarGeneralizedForces:
+    """dL/dq of the polar Lagrangian L = T - U: the right sides dp_m/dt of (12.25d), (12.33)."""
+
+    radial: Any  # dL/dr = M r phi'^2 - dU/dr
+    angular: Any  # dL/dphi = -dU/dphi
+
+
+def polar_generalized_forces(
+    mass: Any, r: Any, rdot: Any, phidot: Any, du_dr: Any, du_dphi: Any = 0
+) -> PolarGeneralizedForces:
+    """dL/dr and dL/dphi of L = T - U(r, phi) in polar coordinates (12.33): the kinetic part
+    differentiated exactly (the centrifugal term of ``polar_terms``), minus the potential's
+    gradient (dU/dr, dU/dphi)."""
+    inputs.real(du_dr, "du_dr")
+    inputs.real(du_dphi, "du_dphi")
+    terms = polar_terms(mass, r, rdot, phidot)
+    return PolarGeneralizedForces(radial=terms.centrifugal - du_dr, angular=0 - du_dphi)
+
+
+@dataclass(frozen=True)
+class CoordinateHamiltonian:
+    """H = p q' - L (12.36a) of L = M g q'^2/2 - U in one generalized coordinate of metric g,
+    with the rate q' and the momentum p = dL/dq' (12.25e) that go with it."""
+
+    rate: Any
+    momentum: Any
+    hamiltonian: Any
+
+
+def _coordinate_lagrangian() -> Laurent:
+    """L = T - U with T = M g q'^2/2 (12.31) for one coordinate, in M, g, qd = q' and U."""
+    m, g, qd, u = (Laurent.var(n) for n in ("M", "g", "qd", "U"))
+    return m * g * qd**2 / 2 - u
+
+
+def hamiltonian_of_rate(mass: Any, metric: Any, rate: Any, potential: Any) -> CoordinateHamiltonian:
+    """H = p q' - L (12.36a) at the rate q' (12.37a-b): p = dL/dq' by differentiating L
+    exactly, then the Legendre form evaluated. Exact for ``int`` and ``Fraction``."""
+    inputs.mass(mass)
+    inputs.positive(metric, "metric")
+    inputs.real(rate, "rate")
+    inputs.real(potential, "potential")
+    lag = _coordinate_lagrangian()
+    momentum = lag.diff("qd")
+    values = {"M": mass, "g": metric, "qd": rate, "U": potential}
+    p = momentum.evaluate(values)
+    return CoordinateHamiltonian(rate=rate, momentum=p, hamiltonian=p * rate - lag.evaluate(values))
+
+
+def hamiltonian_of_momentum(
+    mass: Any, inverse_metric: Any, momentum: Any, potential: Any
+) -> CoordinateHamiltonian:
+    """H = p q' - L (12.37c) at the momentum p, for the coordinate whose contravariant metric
+    is g^11 = ``inverse_metric`` (so g = 1/g^11): p = dL/dq' is linear in q', so q' is p over
+    its slope d p/d q'; then H = p q' - L(q'). Exact for ``int`` and ``Fraction``."""
+    inputs.mass(mass)
+    inputs.positive(inverse_metric, "inverse_metric")
+    inputs.real(momentum, "momentum")
+    inputs.real(potential, "potential")
+    metric = 1 / (Fraction(inverse_metric) if isinstance(inverse_metric, int) else inverse_metric)
+    lag = _coordinate_lagrangian()
+    p_of_rate = lag.diff("qd")
+    if p_of_rate.part("qd", 0).terms:
+        raise ValueError("p = dL/dq' has a part free of q'")
+    values = {"M": mass, "g": metric, "U": potential}
+    rate = momentum / p_of_rate.diff("qd").evaluate(values)
+    values["qd"] = rate
+    return CoordinateHamiltonian(
+        rate=rate, momentum=momentum, hamiltonian=momentum * rate - lag.evaluate(values)
+    )
+
+
+def quadratic_function_slope(point: Any, linear_coefficient: Any) -> Any:
+    """dS/dq at q of S(q) = q^2 + b q (line 15832: S = q^2 - 4q), by the power rule on the
+    exact polynomial, evaluated at ``point``. Exact for ``int`` and ``Fraction``."""
+    b = Fraction(inputs.real(linear_coefficient, "linear_coefficient"))
+    inputs.real(point, "point")
+    q = Laurent.var("q")
+    return (q**2 + b * q).diff("q").evaluate({"q": point})
+
+
 # -------------------------------------------------------------------------------------------
 # Action, phase and Bohr quantization: (12.38)-(12.48), Figs. 12.12-12.15
 # -------------------------------------------------------------------------------------------
@@ -1130,6 +1495,22 @@ def common_speed(velocities: Sequence[Sequence[Any]]) -> float:
     return sum(speeds) / len(speeds)
 
 
+def turning_sequence(
+    first: Sequence[Any], second: Sequence[Any], index: Any
+) -> tuple[float, float]:
+    """The plane vector number ``index`` (0 for ``first``) of the sequence that starts with
+    ``first`` and ``second`` and turns (and scales) each next vector from the last as
+    ``second`` is turned from ``first``: first * (second / first)^index as complex numbers
+    (exercise 1.12.3 lists unit velocities 45 degrees apart). Floats."""
+    k = inputs.count(index, "index")
+    a = complex(*(float(inputs.real(c, "component")) for c in first))
+    b = complex(*(float(inputs.real(c, "component")) for c in second))
+    if a == 0:
+        raise ValueError("the first vector must be non-zero")
+    z = a * (b / a) ** k
+    return z.real, z.imag
+
+
 # -------------------------------------------------------------------------------------------
 # helpers
 # -------------------------------------------------------------------------------------------
@@ -1148,3 +1529,10 @@ def _lib(*values: Any) -> Any:
 
 def _sqrt(x: Any) -> Any:
     return _lib(x).sqrt(x)
+
+
+def _power(x: Any, e: Fraction) -> Any:
+    """x**e: exact for a Fraction x and an integer e, else through float (or mpmath)."""
+    if e.denominator == 1:
+        return x ** int(e)
+    return x ** float(e) if not isinstance(x, Fraction | int) else float(x) ** float(e)

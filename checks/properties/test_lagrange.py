@@ -18,7 +18,9 @@ from hypothesis import strategies as st
 from checks.properties.strategies import (
     convex_lagrangian_coefficients,
     exact_masses,
+    exact_plane_vectors,
     exact_square_mass_ratios,
+    exact_symmetric_matrices,
     exact_velocities,
     gravities,
     launch_angles,
@@ -560,3 +562,312 @@ def test_scaled_kinetic_energy_is_the_same_energy(twice_s: int, m: Fraction, v: 
     assert form.mass_power == 1 - 2 * s
     with pytest.raises(ValueError, match="multiple of 1/2"):
         lagrange.scaled_kinetic_energy(s + Fraction(1, 3))
+
+
+# -- formula models of chapter 12: energies, Legendre pair, root mass --------------------------
+
+
+@given(st.lists(st.tuples(exact_masses(), exact_velocities()), min_size=1, max_size=3))
+@example([(Fraction(4), Fraction(3)), (Fraction(9), Fraction(-2))])
+def test_energy_is_the_same_in_every_scaled_coordinate(
+    pairs: list[tuple[Fraction, Fraction]],
+) -> None:
+    """The kinetic energy of bodies given by u = m^s v is m v^2/2 whatever the scale s: in
+    momenta (s = 1) it is H(p) = sum p^2/(2m) exactly (12.2), (12.4); in quasi-velocities
+    (s = 1/2) it is E(V) = sum V^2/2, mass-free (12.1), (12.5); at s = 0 it is L(v) (12.3)."""
+    masses = [m for m, _ in pairs]
+    velocities = [v for _, v in pairs]
+    lag = lagrange.kinetic_energy(masses, velocities)
+    p = lagrange.momenta(masses, velocities)
+    assert lagrange.scaled_coordinate_energy(masses, p, 1) == lagrange.hamiltonian_free(masses, p)
+    assert lagrange.scaled_coordinate_energy(masses, p, 1) == lag
+    assert lagrange.scaled_coordinate_energy(masses, velocities, 0) == lag
+    fm = [float(m) for m in masses]
+    quasi = lagrange.quasi_velocities(fm, [float(v) for v in velocities])
+    got = lagrange.scaled_coordinate_energy(fm, quasi, Fraction(1, 2))
+    assert _close(got, float(lag))
+    assert _close(got, lagrange.estrangian(quasi))
+    heavier = lagrange.scaled_coordinate_energy([2 * m for m in fm], quasi, "1/2")
+    assert _close(heavier, got)  # E(V) has no mass in it
+
+
+@given(exact_masses())
+@example(Fraction(3))
+def test_root_mass_maps_compose_to_the_mass_and_its_inverse(root: Fraction) -> None:
+    """Two root-mass scalings make the mass, M = R^2, and two inverse ones its inverse,
+    M^-1 = R^-2 (12.9): the two maps are mutual inverses, exactly."""
+    maps = lagrange.root_mass_maps(root)
+    assert maps.mass == root * root
+    assert maps.mass * maps.inverse_mass == 1
+    assert isinstance(maps.inverse_mass, Fraction)
+    assert lagrange.root_mass_maps(int(root.numerator)).mass == root.numerator**2
+    with pytest.raises(ValueError, match="positive"):
+        lagrange.root_mass_maps(-root)
+
+
+@given(st.floats(min_value=1e-3, max_value=1e3), st.floats(min_value=1e-3, max_value=1e3))
+@example(0.5, 1.0)  # Fig. 12.2(d): less mass, the velocity ellipse is twice the momentum one
+def test_ellipse_radius_ratio_is_one_over_the_mass(mass: float, energy: float) -> None:
+    """On each axis the L(v) = E ellipse reaches 1/m times as far as the H(p) = E ellipse,
+    whatever the energy (Fig. 12.2): ratio times mass is 1."""
+    ratio = lagrange.ellipse_radius_ratio(mass, energy)
+    assert _close(ratio * mass, 1.0)
+    assert _close(ratio, lagrange.ellipse_radius_ratio(mass))
+
+
+@given(exact_velocities(), exact_masses())
+@example(Fraction(1), Fraction(8, 5))  # Fig. 12.3: v = 1.0, p = 1.6
+def test_legendre_pair_is_half_pv_both_ways(v: Fraction, m: Fraction) -> None:
+    """For L = m v^2/2 and p = m v: L = v p/2 and H = p v/2 numerically (line 13716), and
+    H = p v - L is the Legendre transform (12.11b); exact. A zero velocity, or a p/v that is no
+    positive mass, is an error."""
+    if v == 0:
+        v = Fraction(1)
+    p = m * v
+    pair = lagrange.quadratic_legendre_pair(v, p)
+    assert pair.mass == m
+    assert pair.lagrangian == pair.hamiltonian == p * v / 2
+    assert pair.hamiltonian == lagrange.legendre_tangent(pair.lagrangian, p, v).transform
+    with pytest.raises(ValueError, match="non-zero"):
+        lagrange.quadratic_legendre_pair(0, p)
+    with pytest.raises(ValueError, match="positive"):
+        lagrange.quadratic_legendre_pair(v, -p)
+
+
+# -- formula models of chapter 12: the trajectory family and its envelope ----------------------
+
+
+@given(launch_speeds(), launch_angles(), gravities(), st.floats(min_value=0, max_value=5))
+def test_generating_solution_vanishes_on_the_trajectory(
+    v0: float, alpha: float, g: float, t: float
+) -> None:
+    """S(v0, a : x, y) (12.15) is zero at every point (x(t), y(t)) of the trajectory (12.14a-b)
+    and grows by one for each unit the point lies lower."""
+    x, y = lagrange.trajectory_position(t, v0, alpha, g)
+    scale = abs(y) + v0 * t + g * t * t
+    assert abs(lagrange.generating_solution(x, y, v0, alpha, g)) <= 1e-12 * (scale + 1)
+    below = lagrange.generating_solution(x, y - 1, v0, alpha, g)
+    assert abs(below - 1) <= 1e-12 * (scale + 1)
+
+
+@given(
+    launch_speeds(),
+    st.floats(min_value=-1.4, max_value=1.4),
+    gravities(),
+    st.floats(min_value=-3, max_value=3),
+)
+def test_angle_derivative_is_the_slope_of_s_in_the_angle(
+    v0: float, alpha: float, g: float, u: float
+) -> None:
+    """dS/da (12.16b) agrees with a central difference of S in the angle, at x in units of the
+    reach v0^2/g; it is zero at the contact abscissa of the angle (12.16c)."""
+    x = u * v0 * v0 / g
+    h = 1e-5
+    numeric = (
+        lagrange.generating_solution(x, 0, v0, alpha + h, g)
+        - lagrange.generating_solution(x, 0, v0, alpha - h, g)
+    ) / (2 * h)
+    exact_slope = lagrange.generating_angle_derivative(x, v0, alpha, g)
+    size = (abs(x) + g * x * x / v0**2) / math.cos(alpha) ** 4
+    assert abs(numeric - exact_slope) <= 1e-6 * (size + 1)
+    if abs(alpha) > 0.05:
+        xc = lagrange.contact_distance(v0, alpha, g)
+        d = lagrange.generating_angle_derivative(xc, v0, alpha, g)
+        assert abs(d) <= 1e-9 * (abs(xc) + g * xc * xc / v0**2) / math.cos(alpha) ** 4
+
+
+@given(launch_speeds(), gravities(), st.floats(min_value=0.05, max_value=20))
+@example(1.0, 1.0, 1.0)  # the 45-degree path touches the envelope at its landing point
+def test_contact_slope_and_abscissa_are_inverse(v0: float, g: float, u: float) -> None:
+    """The trajectory of slope tan a = contact_tangent(x) touches the envelope at x: its
+    contact abscissa is x again, its height there is the envelope's, and dS/da vanishes
+    (12.16c). Both signs of x."""
+    for x in (u * v0 * v0 / g, -u * v0 * v0 / g):
+        tan = lagrange.contact_tangent(x, v0, g)
+        alpha = math.atan(tan)
+        assert _close(lagrange.contact_distance(v0, alpha, g), x, rel=1e-12)
+        y = lagrange.trajectory_height(x, v0, alpha, g)
+        assert abs(y - lagrange.envelope_by_maximum(x, v0, g)) <= 1e-10 * (
+            v0 * v0 / g + g * x * x / v0**2
+        )
+    with pytest.raises(ValueError, match="x = 0"):
+        lagrange.contact_tangent(0.0, v0, g)
+    with pytest.raises(ValueError, match="horizontal"):
+        lagrange.contact_distance(v0, 0.0, g)
+
+
+@given(
+    launch_speeds(),
+    gravities(),
+    st.floats(min_value=0.01, max_value=3),
+    st.sampled_from([1, -1]),
+    launch_angles(),
+)
+@example(1.0, 1.0, 0.0, 1, 0.7)  # x = 0: the top of the vertical launch, v0^2/(2g)
+def test_envelope_by_maximum_bounds_every_trajectory(
+    v0: float, g: float, u: float, sign: int, alpha: float
+) -> None:
+    """The highest point over all elevations at an abscissa lies above every trajectory there
+    (also one launched backwards) and on the parabola v0^2/(2g) - g x^2/(2 v0^2) (12.17), at
+    x from 1/100 to 3 reaches v0^2/g on either side, and at x = 0 (the vertical launch)."""
+    x = sign * u * v0 * v0 / g
+    top = lagrange.envelope_by_maximum(x, v0, g)
+    scale = v0 * v0 / g + g * x * x / v0**2
+    for a in (alpha, -alpha):
+        assert lagrange.trajectory_height(x, v0, a, g) <= top + 1e-12 * scale
+    assert abs(top - lagrange.envelope_height(x, v0, g)) <= 1e-12 * scale
+
+
+# -- formula models of chapter 12: Lagrange's derivation, polar coordinates, Hamiltonians -------
+
+
+@given(exact_symmetric_matrices(), exact_plane_vectors(), exact_plane_vectors())
+def test_gradient_potential_has_gradient_m_dot_v(
+    matrix: tuple[tuple[Fraction, ...], ...],
+    v: tuple[Fraction, Fraction],
+    w: tuple[Fraction, Fraction],
+) -> None:
+    """F(v) = integral_0^1 (M.(t v)).v dt has the directional derivative (M.v).w along any w
+    (line 15022: d/dq of it is M_ij v^i dv^j/dq), vanishes at 0 and is homogeneous of degree
+    two; exact (a central difference is exact for a quadratic). A non-symmetric matrix has
+    no potential."""
+    f = lagrange.gradient_potential
+    h = Fraction(1, 7)
+    plus = [v[k] + h * w[k] for k in range(2)]
+    minus = [v[k] - h * w[k] for k in range(2)]
+    slope = (f(matrix, plus) - f(matrix, minus)) / (2 * h)
+    mv = [sum(matrix[i][j] * v[j] for j in range(2)) for i in range(2)]
+    assert slope == sum(mv[i] * w[i] for i in range(2))
+    assert f(matrix, [0, 0]) == 0
+    assert f(matrix, [2 * v[0], 2 * v[1]]) == 4 * f(matrix, list(v))
+    if matrix[0][1] != 0:
+        skew = [[matrix[0][0], matrix[0][1]], [-matrix[0][1], matrix[1][1]]]
+        with pytest.raises(ValueError, match="symmetric"):
+            f(skew, list(v))
+
+
+def _cartesian_state(orbit: tuple[float, float, float, float, float]):
+    a_amp, b_amp, a, b, t = orbit
+    pos = (a_amp * math.cos(t + a), b_amp * math.cos(t + b))
+    vel = (-a_amp * math.sin(t + a), -b_amp * math.sin(t + b))
+    return pos, vel
+
+
+@given(oscillator_orbits(), st.floats(min_value=0.1, max_value=10), st.floats(-5, 5))
+def test_polar_lagrangian_and_momenta_are_the_cartesian_ones(
+    orbit: tuple[float, float, float, float, float], mass: float, u: float
+) -> None:
+    """At a Cartesian state, the polar Lagrangian from (r, r', phi') is M |v|^2/2 - U (12.32),
+    p_phi is the angular momentum M (x vy - y vx) and p_r = M r.v/r (12.25e); dL/dr at fixed
+    rates (a central difference) is the centrifugal force minus dU/dr (12.33)."""
+    pos, vel = _cartesian_state(orbit)
+    state = lagrange.polar_state(pos, vel, (0.0, 0.0))
+    if state.r < 1e-3:
+        return
+    speed2 = vel[0] ** 2 + vel[1] ** 2
+    lag = lagrange.polar_lagrangian(mass, state.r, state.rdot, state.phidot, u, state.phi)
+    assert abs(lag - (mass * speed2 / 2 - u)) <= 1e-12 * (mass * speed2 + abs(u) + 1)
+    terms = lagrange.polar_terms(mass, state.r, state.rdot, state.phidot)
+    cross = pos[0] * vel[1] - pos[1] * vel[0]
+    assert _close(terms.angular_momentum, mass * cross, mass * state.r * math.sqrt(speed2))
+    dot = (pos[0] * vel[0] + pos[1] * vel[1]) / state.r
+    assert _close(terms.radial_momentum, mass * dot, mass * math.sqrt(speed2))
+    h = 1e-6 * state.r
+    d_lag = (
+        lagrange.polar_lagrangian(mass, state.r + h, state.rdot, state.phidot)
+        - lagrange.polar_lagrangian(mass, state.r - h, state.rdot, state.phidot)
+    ) / (2 * h)
+    forces = lagrange.polar_generalized_forces(mass, state.r, state.rdot, state.phidot, u, -u)
+    assert abs(forces.radial - (d_lag - u)) <= 1e-6 * (mass * speed2 / state.r + abs(u) + 1)
+    assert forces.angular == u
+    with pytest.raises(ValueError, match="positive"):
+        lagrange.polar_terms(mass, 0.0, state.rdot, state.phidot)
+
+
+@given(
+    exact_masses(),
+    exact_masses(),
+    exact_velocities(),
+    exact_velocities(),
+)
+@example(Fraction(1), Fraction(1), Fraction(2), Fraction(0))  # a free particle: H = T
+def test_coordinate_hamiltonian_is_the_energy_both_ways(
+    mass: Fraction, metric: Fraction, rate: Fraction, potential: Fraction
+) -> None:
+    """H = p q' - L of L = M g q'^2/2 - U is the energy T + U (12.37b) with p = M g q'; in
+    momenta, with the contravariant metric 1/g, it is the same H at the same rate (12.37c).
+    Exact."""
+    h = lagrange.hamiltonian_of_rate(mass, metric, rate, potential)
+    assert h.momentum == mass * metric * rate
+    assert h.hamiltonian == mass * metric * rate * rate / 2 + potential
+    back = lagrange.hamiltonian_of_momentum(mass, 1 / metric, h.momentum, potential)
+    assert (back.rate, back.hamiltonian) == (rate, h.hamiltonian)
+    whole = lagrange.hamiltonian_of_momentum(mass, 1, h.momentum, potential)
+    assert whole.hamiltonian == h.momentum**2 / (2 * mass) + potential
+
+
+@given(exact_velocities(), exact_velocities())
+@example(Fraction(2), Fraction(-4))  # line 15832: S = q^2 - 4q is stationary at q = 2
+def test_quadratic_slope_is_the_central_difference(q: Fraction, b: Fraction) -> None:
+    """dS/dq of S = q^2 + b q equals its central difference (exact for a quadratic) and
+    vanishes at the extremum of ``quadratic_extremum`` (line 15832)."""
+    h = Fraction(1, 3)
+
+    def s(x: Fraction) -> Fraction:
+        return x * x + b * x
+
+    assert lagrange.quadratic_function_slope(q, b) == (s(q + h) - s(q - h)) / (2 * h)
+    assert lagrange.quadratic_function_slope(lagrange.quadratic_extremum(b).point, b) == 0
+
+
+@given(
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=-7, max_value=7),
+    st.floats(min_value=-7, max_value=7),
+    st.integers(0, 16),
+)
+@example(1.0, math.pi / 2, math.pi / 4, 2)  # exercise 1.12.3: (0,1), (1/sqrt 2, 1/sqrt 2), (1,0)
+def test_turning_sequence_turns_by_one_step(
+    length: float, start: float, second: float, k: int
+) -> None:
+    """Each vector of the sequence is the last turned by the angle from the first to the
+    second: the angle grows by one step per index and, for equal lengths, the length stays."""
+    first = (length * math.cos(start), length * math.sin(start))
+    nxt = (length * math.cos(second), length * math.sin(second))
+    x, y = lagrange.turning_sequence(first, nxt, k)
+    angle = start + k * (second - start)
+    assert abs(x - length * math.cos(angle)) <= 1e-12 * length * (k + 1)
+    assert abs(y - length * math.sin(angle)) <= 1e-12 * length * (k + 1)
+    assert lagrange.turning_sequence(first, nxt, 0) == pytest.approx(first, abs=1e-15 * length)
+    assert lagrange.turning_sequence(first, nxt, 1) == pytest.approx(nxt, rel=1e-12, abs=1e-12)
+    with pytest.raises(ValueError, match="non-zero"):
+        lagrange.turning_sequence((0, 0), nxt, k)
+
+
+@given(
+    st.lists(st.floats(min_value=-3, max_value=3), min_size=4, max_size=4),
+    st.tuples(st.floats(min_value=-3, max_value=3), st.floats(min_value=-3, max_value=3)),
+    st.floats(min_value=0.1, max_value=10),
+)
+def test_metric_energy_is_the_cartesian_energy_of_any_jacobian(
+    entries: list[float], rates: tuple[float, float], mass: float
+) -> None:
+    """For any invertible Jacobian J the kinetic energy of the metric g = J^T J at the rates q'
+    is M |J q'|^2/2 (12.31): the energy depends on the coordinates only through g. In polar
+    coordinates it is the polar Lagrangian M (r'^2 + r^2 phi'^2)/2 (12.32). A metric that is
+    not positive definite is refused."""
+    j = [entries[:2], entries[2:]]
+    det = j[0][0] * j[1][1] - j[0][1] * j[1][0]
+    if abs(det) < 1e-2:
+        return
+    g = [[sum(j[k][m] * j[k][n] for k in range(2)) for n in range(2)] for m in range(2)]
+    g[1][0] = g[0][1]
+    v = [sum(j[k][m] * rates[m] for m in range(2)) for k in range(2)]
+    want = mass * (v[0] ** 2 + v[1] ** 2) / 2
+    size = mass * sum(x * x for x in entries) * sum(x * x for x in rates)
+    assert abs(lagrange.metric_kinetic_energy(mass, g, rates) - want) <= 1e-9 * (size + 1e-12)
+    r, phi = 0.5 + abs(entries[0]), entries[1]
+    polar = lagrange.metric_kinetic_energy(mass, lagrange.polar_metric(r, phi), rates)
+    assert _close(polar, lagrange.polar_lagrangian(mass, r, rates[0], rates[1], 0, phi))
+    with pytest.raises(ValueError, match="positive definite"):
+        lagrange.metric_kinetic_energy(mass, [[1.0, 2.0], [2.0, 1.0]], rates)
