@@ -1607,7 +1607,8 @@ class StereographicLengths:
     """The lengths of Fig. 10.15 for the point P at the central angle theta on a sphere of
     diameter D (N on the z-plane, S on the w-plane): ``z_radius`` |z| and ``w_radius`` |w| of
     its two images, the chords ``south_chord`` SP and ``north_chord`` NP, P's depth below N
-    (``north_depth``) and height above S (``south_height``)."""
+    (``north_depth``), its height above S (``south_height``) and the angle NSP at S between the
+    axis and the chord SP (``south_angle``, radians), the angle the figure marks theta/2."""
 
     z_radius: float
     w_radius: float
@@ -1615,6 +1616,7 @@ class StereographicLengths:
     north_chord: float
     north_depth: float
     south_height: float
+    south_angle: float
 
 
 def stereographic_lengths(theta: Any, diameter: Any) -> StereographicLengths:
@@ -1635,6 +1637,7 @@ def stereographic_lengths(theta: Any, diameter: Any) -> StereographicLengths:
         north_chord=math.hypot(px, d - py),
         north_depth=d - py,
         south_height=py,
+        south_angle=math.atan2(px, py),
     )
 
 
