@@ -1354,6 +1354,64 @@ def phasor_pair_square(r1: Any, phi1: Any, r2: Any, phi2: Any, sign: Any = 1) ->
 
 
 @dataclass(frozen=True)
+class PlanePoint:
+    """A point (x, y) of the plane."""
+
+    x: float
+    y: float
+
+
+def coordinates_from_z(x: Any, y: Any) -> PlanePoint:
+    """x and y rebuilt from z = x + i y and z* = x - i y with the entries of the inverse map
+    (``inverse_coordinates``): x = (dx/dz) z + (dx/dz*) z*, y = (dy/dz) z + (dy/dz*) z* (10.31)."""
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    inv = inverse_coordinates()
+    z, zstar = complex(float(x), float(y)), complex(float(x), -float(y))
+    rebuilt_x = complex(inv.dx_dz) * z + complex(inv.dx_dzstar) * zstar
+    rebuilt_y = complex(inv.dy_dz) * z + complex(inv.dy_dzstar) * zstar
+    return PlanePoint(rebuilt_x.real, rebuilt_y.real)
+
+
+@dataclass(frozen=True)
+class ChainRule:
+    """``dz`` = df/dz and ``dzstar`` = df/dz* of a function f(x, y) at a point (10.31)."""
+
+    dz: complex
+    dzstar: complex
+
+
+def chain_rule_derivatives(dfdx_re: Any, dfdx_im: Any, dfdy_re: Any, dfdy_im: Any) -> ChainRule:
+    """The z- and z*-derivatives of a function f(x, y) whose partial derivatives at the point
+    are df/dx = dfdx_re + i dfdx_im and df/dy = dfdy_re + i dfdy_im, by the chain rule
+    df/dz = (dx/dz) df/dx + (dy/dz) df/dy (and the same for z*) with the factors of the inverse
+    map z = x + iy, z* = x - iy (``inverse_coordinates``), (10.31)-(10.34)."""
+    for value, name in (
+        (dfdx_re, "dfdx_re"),
+        (dfdx_im, "dfdx_im"),
+        (dfdy_re, "dfdy_re"),
+        (dfdy_im, "dfdy_im"),
+    ):
+        inputs.real(value, name)
+    inv = inverse_coordinates()
+    p = complex(float(dfdx_re), float(dfdx_im))
+    q = complex(float(dfdy_re), float(dfdy_im))
+    return ChainRule(
+        dz=complex(inv.dx_dz) * p + complex(inv.dy_dz) * q,
+        dzstar=complex(inv.dx_dzstar) * p + complex(inv.dy_dzstar) * q,
+    )
+
+
+def conjugate_potential_derivative(dphi_dx: Any, dphi_dy: Any, da_dx: Any, da_dy: Any) -> complex:
+    """dphi*/dz* of the conjugate potential phi* = Phi - i A whose parts have the partial
+    derivatives dPhi/dx, dPhi/dy, dA/dx, dA/dy at the point: the chain rule
+    (``chain_rule_derivatives``) applied to d(Phi - iA)/dx and d(Phi - iA)/dy, (10.34)."""
+    for value, name in ((da_dx, "da_dx"), (da_dy, "da_dy")):
+        inputs.real(value, name)
+    return chain_rule_derivatives(dphi_dx, -float(da_dx), dphi_dy, -float(da_dy)).dzstar
+
+
+@dataclass(frozen=True)
 class FieldPoint:
     """A complex field and its potential at one point z (10.33): ``field`` f(z); ``plotted``
     the drawn vector F = Fx + i Fy = f*(z*), the conjugate of f; ``potential`` phi(z), whose

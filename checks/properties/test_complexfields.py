@@ -784,3 +784,32 @@ def test_stereographic_lengths_obey_thales_and_invert_radii(
     assert close(back, rho, 1e-9 * rho)
     with pytest.raises(ValueError, match="theta"):
         cf.stereographic_lengths(0.0, diameter)
+
+
+@given(st.floats(min_value=-1e3, max_value=1e3), st.floats(min_value=-1e3, max_value=1e3))
+def test_the_inverse_map_rebuilds_x_and_y_from_z_and_zstar(x: float, y: float) -> None:
+    """x and y are recovered from z = x + iy and z* = x - iy through the inverse map (10.31)."""
+    p = cf.coordinates_from_z(x, y)
+    assert close(p.x, x, 1e-12 * (1 + abs(x) + abs(y)))
+    assert close(p.y, y, 1e-12 * (1 + abs(x) + abs(y)))
+
+
+@given(gaussian_integers(), gaussian_integers(), gaussian_integers())
+def test_the_chain_rule_sees_z_and_zstar_apart(c: tuple, p: tuple, q: tuple) -> None:
+    """For an analytic f (df/dy = i df/dx, Cauchy-Riemann) df/dz is df/dx and df/dz* = 0; for
+    f = c z*, df/dz = 0 and df/dz* = c; both derivatives are linear in the partials (10.31).
+    The conjugate potential phi* = Phi - iA of an analytic phi with dphi/dz = f has
+    dphi*/dz* = f*, the plotted field (10.33b)."""
+    fx = complex(*c)
+    analytic = cf.chain_rule_derivatives(fx.real, fx.imag, (1j * fx).real, (1j * fx).imag)
+    assert abs(analytic.dz - fx) <= 1e-12 * (1 + abs(fx))
+    assert abs(analytic.dzstar) <= 1e-12 * (1 + abs(fx))
+    anti = cf.chain_rule_derivatives(fx.real, fx.imag, (-1j * fx).real, (-1j * fx).imag)
+    assert abs(anti.dz) <= 1e-12 * (1 + abs(fx))
+    assert abs(anti.dzstar - fx) <= 1e-12 * (1 + abs(fx))
+    a, b = cf.chain_rule_derivatives(*p, 0, 0), cf.chain_rule_derivatives(0, 0, *q)
+    both = cf.chain_rule_derivatives(*p, *q)
+    assert abs(both.dz - (a.dz + b.dz)) <= 1e-12 * (1 + abs(complex(*p)) + abs(complex(*q)))
+    # phi analytic with phi' = f: Phi_x = Re f, Phi_y = -Im f, A_x = Im f, A_y = Re f
+    star = cf.conjugate_potential_derivative(fx.real, -fx.imag, fx.imag, fx.real)
+    assert abs(star - fx.conjugate()) <= 1e-12 * (1 + abs(fx))
