@@ -1484,6 +1484,15 @@ def power_field_polar(
     return power_field_at(field_power, z.real, z.imag, strength_re, strength_im)
 
 
+def potential_term_poles(potential_power: Any) -> int:
+    """The number of poles 2^order of the multipole behind the potential term a z^m/m, m != 0
+    (10.44): its field term is a z^(m-1) (``multipole_of_laurent_term``)."""
+    m = _integer(potential_power, "potential_power")
+    if m == 0:
+        raise ValueError("the m = 0 potential term is a_-1 ln z, not a power")
+    return multipole_of_laurent_term(m - 1).poles
+
+
 def multipole_term_at(
     order: Any, location: str, x: Any, y: Any, strength_re: Any = 1, strength_im: Any = 0
 ) -> FieldPoint:

@@ -813,3 +813,12 @@ def test_the_chain_rule_sees_z_and_zstar_apart(c: tuple, p: tuple, q: tuple) -> 
     # phi analytic with phi' = f: Phi_x = Re f, Phi_y = -Im f, A_x = Im f, A_y = Re f
     star = cf.conjugate_potential_derivative(fx.real, -fx.imag, fx.imag, fx.real)
     assert abs(star - fx.conjugate()) <= 1e-12 * (1 + abs(fx))
+
+
+@pytest.mark.parametrize("m", [m for m in range(-6, 7) if m])
+def test_a_potential_term_belongs_to_a_two_to_the_abs_m_pole(m: int) -> None:
+    """The potential term a_(m-1) z^m/m comes from the field term a_(m-1) z^(m-1): a 2^|m|-pole,
+    at z = 0 for m < 0 and at infinity for m > 0 (10.44); m = 0 is the logarithm."""
+    assert cf.potential_term_poles(m) == 2 ** abs(m)
+    with pytest.raises(ValueError, match="ln z"):
+        cf.potential_term_poles(0)
