@@ -1269,9 +1269,22 @@ class NonAnalyticField:
     curl_transverse: PolyView
 
 
-def conjugate_power_field(strength_re: Any, strength_im: Any, power: Any) -> NonAnalyticField:
-    """Sources, potentials and fields of f = k (z*)^n, k = strength_re + i strength_im (exact
-    for rational k), n >= 0 (10.51)-(10.56)."""
+@dataclass(frozen=True)
+class _NonAnalyticPolys:
+    """The polynomials behind ``NonAnalyticField`` (in x, y unless named ``_z``: in z, z*)."""
+
+    fstar: Poly
+    s_star: Poly
+    s_star_z: Poly
+    phi_z: Poly
+    big_phi: Poly
+    a: Poly
+    longitudinal: tuple[Poly, Poly]
+    transverse: tuple[Poly, Poly]
+
+
+def _conjugate_power_polys(strength_re: Any, strength_im: Any, power: Any) -> _NonAnalyticPolys:
+    """Sources, potentials and fields of f = k (z*)^n as exact polynomials (10.46)-(10.56)."""
     n = inputs.count(power, "power")
     k = Gaussian(Fraction(strength_re), Fraction(strength_im))
     factors = source_field_factors()
@@ -1294,16 +1307,23 @@ def conjugate_power_field(strength_re: Any, strength_im: Any, power: Any) -> Non
     tx, ty = curl_of_z_vector(a)
     if lx + tx != fstar.real_part() or ly + ty != fstar.imag_part():
         raise ArithmeticError("fL* + fT* is not the field f*")
-    powers = {f"z{p}": q for (p, q) in phi_z.terms}
+    return _NonAnalyticPolys(fstar, s_star, s_star_z, phi_z, big_phi, a, (lx, ly), (tx, ty))
+
+
+def conjugate_power_field(strength_re: Any, strength_im: Any, power: Any) -> NonAnalyticField:
+    """Sources, potentials and fields of f = k (z*)^n, k = strength_re + i strength_im (exact
+    for rational k), n >= 0 (10.51)-(10.56)."""
+    p = _conjugate_power_polys(strength_re, strength_im, power)
+    (lx, ly), (tx, ty) = p.longitudinal, p.transverse
     return NonAnalyticField(
-        source_star=complex_view(s_star),
-        source_star_z=complex_view(s_star_z, "z", "s"),
-        rho=poly_view(s_star.real_part()),
-        current=poly_view(-s_star.imag_part()),
-        potential_z=complex_view(phi_z, "z", "s"),
-        potential_z_powers=powers,
-        phi=poly_view(big_phi),
-        a=poly_view(a),
+        source_star=complex_view(p.s_star),
+        source_star_z=complex_view(p.s_star_z, "z", "s"),
+        rho=poly_view(p.s_star.real_part()),
+        current=poly_view(-p.s_star.imag_part()),
+        potential_z=complex_view(p.phi_z, "z", "s"),
+        potential_z_powers={f"z{a}": b for (a, b) in p.phi_z.terms},
+        phi=poly_view(p.big_phi),
+        a=poly_view(p.a),
         longitudinal_x=poly_view(lx),
         longitudinal_y=poly_view(ly),
         transverse_x=poly_view(tx),
@@ -1313,6 +1333,423 @@ def conjugate_power_field(strength_re: Any, strength_im: Any, power: Any) -> Non
         div_longitudinal=poly_view(divergence(lx, ly)),
         curl_transverse=poly_view(curl_z(tx, ty)),
     )
+
+
+# -------------------------------------------------------------------------------------------
+# Formulas at a point: the quantities that formula claims compare with the book's formulas
+# -------------------------------------------------------------------------------------------
+
+
+def phasor_pair_square(r1: Any, phi1: Any, r2: Any, phi2: Any, sign: Any = 1) -> float:
+    """|z + s z'|^2 for the phasors z = r1 e^(i phi1), z' = r2 e^(i phi2) and s = +1 (sum) or
+    -1 (difference): the squared length of the parallelogram diagonal, computed as the product
+    (z + s z')* (z + s z') of the sum with its conjugate (10.25a-b), Fig. 10.6."""
+    for value, name in ((r1, "r1"), (phi1, "phi1"), (r2, "r2"), (phi2, "phi2")):
+        inputs.real(value, name)
+    s = int(sign)
+    if s not in (1, -1) or s != sign:
+        raise ValueError(f"sign must be +1 or -1, got {sign!r}")
+    w = cmath.rect(float(r1), float(phi1)) + s * cmath.rect(float(r2), float(phi2))
+    return (w.conjugate() * w).real
+
+
+@dataclass(frozen=True)
+class PlanePoint:
+    """A point (x, y) of the plane."""
+
+    x: float
+    y: float
+
+
+def coordinates_from_z(x: Any, y: Any) -> PlanePoint:
+    """x and y rebuilt from z = x + i y and z* = x - i y with the entries of the inverse map
+    (``inverse_coordinates``): x = (dx/dz) z + (dx/dz*) z*, y = (dy/dz) z + (dy/dz*) z* (10.31)."""
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    inv = inverse_coordinates()
+    z, zstar = complex(float(x), float(y)), complex(float(x), -float(y))
+    rebuilt_x = complex(inv.dx_dz) * z + complex(inv.dx_dzstar) * zstar
+    rebuilt_y = complex(inv.dy_dz) * z + complex(inv.dy_dzstar) * zstar
+    return PlanePoint(rebuilt_x.real, rebuilt_y.real)
+
+
+@dataclass(frozen=True)
+class ChainRule:
+    """``dz`` = df/dz and ``dzstar`` = df/dz* of a function f(x, y) at a point (10.31)."""
+
+    dz: complex
+    dzstar: complex
+
+
+def chain_rule_derivatives(dfdx_re: Any, dfdx_im: Any, dfdy_re: Any, dfdy_im: Any) -> ChainRule:
+    """The z- and z*-derivatives of a function f(x, y) whose partial derivatives at the point
+    are df/dx = dfdx_re + i dfdx_im and df/dy = dfdy_re + i dfdy_im, by the chain rule
+    df/dz = (dx/dz) df/dx + (dy/dz) df/dy (and the same for z*) with the factors of the inverse
+    map z = x + iy, z* = x - iy (``inverse_coordinates``), (10.31)-(10.34)."""
+    for value, name in (
+        (dfdx_re, "dfdx_re"),
+        (dfdx_im, "dfdx_im"),
+        (dfdy_re, "dfdy_re"),
+        (dfdy_im, "dfdy_im"),
+    ):
+        inputs.real(value, name)
+    inv = inverse_coordinates()
+    p = complex(float(dfdx_re), float(dfdx_im))
+    q = complex(float(dfdy_re), float(dfdy_im))
+    return ChainRule(
+        dz=complex(inv.dx_dz) * p + complex(inv.dy_dz) * q,
+        dzstar=complex(inv.dx_dzstar) * p + complex(inv.dy_dzstar) * q,
+    )
+
+
+def conjugate_potential_derivative(dphi_dx: Any, dphi_dy: Any, da_dx: Any, da_dy: Any) -> complex:
+    """dphi*/dz* of the conjugate potential phi* = Phi - i A whose parts have the partial
+    derivatives dPhi/dx, dPhi/dy, dA/dx, dA/dy at the point: the chain rule
+    (``chain_rule_derivatives``) applied to d(Phi - iA)/dx and d(Phi - iA)/dy, (10.34)."""
+    for value, name in ((da_dx, "da_dx"), (da_dy, "da_dy")):
+        inputs.real(value, name)
+    return chain_rule_derivatives(dphi_dx, -float(da_dx), dphi_dy, -float(da_dy)).dzstar
+
+
+@dataclass(frozen=True)
+class FieldPoint:
+    """A complex field and its potential at one point z (10.33): ``field`` f(z); ``plotted``
+    the drawn vector F = Fx + i Fy = f*(z*), the conjugate of f; ``potential`` phi(z), whose
+    z-derivative is f; ``phi`` = Phi = Re phi (scalar potential) and ``a`` = A = Im phi
+    (vector potential)."""
+
+    field: complex
+    plotted: complex
+    potential: complex
+    phi: float
+    a: float
+
+
+def _field_point(field: complex, potential: complex) -> FieldPoint:
+    return FieldPoint(field, field.conjugate(), potential, potential.real, potential.imag)
+
+
+def _point(x: Any, y: Any) -> complex:
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    z = complex(float(x), float(y))
+    if z == 0:
+        raise ValueError("the point must not be the origin (a source may sit there)")
+    return z
+
+
+def _polar_point(r: Any, theta: Any) -> complex:
+    inputs.positive(r, "r")
+    inputs.real(theta, "theta")
+    return cmath.rect(float(r), float(theta))
+
+
+def _strength(strength_re: Any, strength_im: Any) -> complex:
+    inputs.real(strength_re, "strength_re")
+    inputs.real(strength_im, "strength_im")
+    return complex(float(strength_re), float(strength_im))
+
+
+def _integer(value: Any, name: str) -> int:
+    n = int(value)
+    if n != value:
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+    return n
+
+
+def power_field_at(
+    field_power: Any, x: Any, y: Any, strength_re: Any = 1, strength_im: Any = 0
+) -> FieldPoint:
+    """The power field f = a z^n at z = x + i y, a = strength_re + i strength_im, with its
+    potential: a z^(n+1)/(n+1) from the inverted power rule (``power_antiderivative``), or, for
+    the one power without a power-law potential, a ln z on the principal branch
+    (-pi < theta <= pi), whose z-derivative is a/z (10.35a), (10.38), (10.44)."""
+    n = _integer(field_power, "field_power")
+    z, a = _point(x, y), _strength(strength_re, strength_im)
+    try:
+        anti = power_antiderivative(n)
+    except ValueError:
+        potential = a * cmath.log(z)
+    else:
+        potential = a * float(anti.coefficient) * z**anti.power
+    return _field_point(a * z**n, potential)
+
+
+def power_field_polar(
+    field_power: Any, r: Any, theta: Any, strength_re: Any = 1, strength_im: Any = 0
+) -> FieldPoint:
+    """``power_field_at`` at the point z = r e^(i theta) (Figs. 10.9-10.14 label their fields
+    and potentials in polar form)."""
+    z = _polar_point(r, theta)
+    return power_field_at(field_power, z.real, z.imag, strength_re, strength_im)
+
+
+def potential_term_poles(potential_power: Any) -> int:
+    """The number of poles 2^order of the multipole behind the potential term a z^m/m, m != 0
+    (10.44): its field term is a z^(m-1) (``multipole_of_laurent_term``)."""
+    m = _integer(potential_power, "potential_power")
+    if m == 0:
+        raise ValueError("the m = 0 potential term is a_-1 ln z, not a power")
+    return multipole_of_laurent_term(m - 1).poles
+
+
+def multipole_term_at(
+    order: Any, location: str, x: Any, y: Any, strength_re: Any = 1, strength_im: Any = 0
+) -> FieldPoint:
+    """The Laurent term a z^n of a 2^order-pole at the origin or at infinity (10.44), the
+    power n found by ``laurent_term_of_multipole``, with its potential (``power_field_at``)."""
+    n = laurent_term_of_multipole(order, location)
+    return power_field_at(n, x, y, strength_re, strength_im)
+
+
+def dipole_pair_at(
+    strength: Any, separation: Any, x: Any, y: Any, position_divisor: Any = 2
+) -> FieldPoint:
+    """The pair of line sources of (10.41): +a at z = -D/d and -a at z = +D/d (the pair whose
+    field the book prints, f_dipole = a/(z + D/2) - a/(z - D/2)), at z = x + i y: the field is
+    the sum of the sources' fields q/(z - p) (10.40a) and the potential the sum of their
+    potentials q ln(z - p) (10.40b), principal branches."""
+    inputs.real(strength, "strength")
+    inputs.positive(separation, "separation")
+    inputs.positive(position_divisor, "position_divisor")
+    z, a = _point(x, y), float(strength)
+    s = float(separation) / float(position_divisor)
+    sources = ((a, -s), (-a, s))
+    if any(z == p for _, p in sources):
+        raise ValueError("the point must not be a source")
+    field = sum((q / (z - p) for q, p in sources), start=0j)
+    potential = sum((q * cmath.log(z - p) for q, p in sources), start=0j)
+    return _field_point(field, potential)
+
+
+def line_multipole_at(
+    strength: Any, derivatives: Any, x: Any, y: Any, factor: Any = 1
+) -> FieldPoint:
+    """The k-th z-derivative of the unit line source, k = ``derivatives`` (10.40)-(10.43): the
+    field factor * d^k/dz^k (a/z) and the potential factor * d^k/dz^k (a ln z), whose
+    z-derivative is that field. Each derivative is the power rule (``laurent_derivative``); the
+    derivative of ln z is 1/z. k = 1 is the point dipole f_2-pole = -a/z^2 with
+    phi_2-pole = a/z (10.41); the book's 4-pole is k = 2 with the factor 1/2 (10.43)."""
+    k = inputs.count(derivatives, "derivatives")
+    inputs.real(strength, "strength")
+    inputs.real(factor, "factor")
+    z = _point(x, y)
+    scale = float(strength) * float(factor)
+    field = LaurentTerm(Fraction(1), -1)
+    for _ in range(k):
+        field = laurent_derivative(field.coefficient, field.power)
+    if k == 0:
+        potential = cmath.log(z)
+    else:
+        term = LaurentTerm(Fraction(1), -1)  # d/dz ln z
+        for _ in range(k - 1):
+            term = laurent_derivative(term.coefficient, term.power)
+        potential = float(term.coefficient) * z**term.power
+    return _field_point(scale * float(field.coefficient) * z**field.power, scale * potential)
+
+
+def line_multipole_polar(
+    strength: Any, derivatives: Any, r: Any, theta: Any, factor: Any = 1
+) -> FieldPoint:
+    """``line_multipole_at`` at z = r e^(i theta) (the polar labels of Fig. 10.11, (10.42))."""
+    z = _polar_point(r, theta)
+    return line_multipole_at(strength, derivatives, z.real, z.imag, factor)
+
+
+def dipole_level_radius(strength: Any, level: Any, theta: Any, part: str) -> float:
+    """The distance r along the ray at angle theta where the point-dipole potential
+    phi_2-pole = a/z (10.42) has Phi = level (``part`` "phi") or A = level (``part`` "a"):
+    on a ray the potential falls off as 1/r (checked at r = 1 and r = 2), so r is the value
+    at r = 1 over the level; the level lines are the circles of Fig. 10.11. ``ValueError``
+    where the ray does not reach that level (r <= 0)."""
+    if part not in ("phi", "a"):
+        raise ValueError(f"part must be 'phi' or 'a', got {part!r}")
+    inputs.real(level, "level")
+    if float(level) == 0:
+        raise ValueError("the zero level lines are rays, not circles")
+    at_one = getattr(line_multipole_polar(strength, 1, 1, theta), part)
+    at_two = getattr(line_multipole_polar(strength, 1, 2, theta), part)
+    if not math.isclose(at_two * 2, at_one, rel_tol=1e-12, abs_tol=1e-300):
+        raise ArithmeticError("the dipole potential does not fall off as 1/r")
+    r = at_one / float(level)
+    if not r > 0:
+        raise ValueError(f"the ray at theta = {theta} does not reach the level {level}")
+    return r
+
+
+def laurent_potential_at(coefficients: Iterable[Any], lowest: Any, x: Any, y: Any) -> complex:
+    """The potential series of (10.44): for the field sum a_n z^n, n = lowest, lowest + 1, ...
+    (one real coefficient a_n each), the sum of the potentials of its terms (``power_field_at``:
+    a_n z^(n+1)/(n+1), and a_-1 ln z)."""
+    start = _integer(lowest, "lowest")
+    total = 0j
+    for j, c in enumerate(coefficients):
+        total += power_field_at(start + j, x, y, c, 0).potential
+    return total
+
+
+def inverted_laurent_potential_at(
+    coefficients: Iterable[Any], lowest: Any, x: Any, y: Any
+) -> complex:
+    """The potential series of (10.44) with z replaced by w = 1/z, at z = x + i y: the series
+    ``laurent_potential_at`` evaluated at the point w (Fig. 10.15 maps z to w = 1/z; ln w is
+    -ln z off the negative real axis)."""
+    w = 1 / _point(x, y)
+    return laurent_potential_at(coefficients, lowest, w.real, w.imag)
+
+
+def analytic_polynomial_at(coefficients: Iterable[Any], x: Any, y: Any) -> complex:
+    """f(z) = sum c_k z^k, k = 0, 1, ..., at z = x + i y: a function with no poles, equal to its
+    whole Taylor (Maclaurin) series around 0, whose coefficients are c_k = f^(k)(0)/k! (10.45c)."""
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    z = complex(float(x), float(y))
+    total = 0j
+    for c in reversed(list(coefficients)):  # Horner
+        inputs.real(c, "coefficient")
+        total = total * z + float(c)
+    return total
+
+
+@cache
+def laurent_weight_power(index: Any) -> int:
+    """The power p for which (1/(2 pi i)) loop z^p f(z) dz around the origin returns the
+    Laurent coefficient a_index of f (10.44): searched over p = -8 ... 8 by contour integration
+    (double precision) of a test series with known, distinct coefficients; the one p that
+    recovers a_index."""
+    n = _integer(index, "index")
+    coeffs = _test_laurent_coefficients(-5, 5)
+    if n not in coeffs:
+        raise ValueError(f"index must be in [-5, 5], got {n}")
+    found = []
+    for p in range(-8, 9):
+
+        def weighted(z: Any, p: int = p) -> Any:
+            return sum(c * z ** (k + p) for k, c in coeffs.items())
+
+        value, error = _float_contour(weighted, 0j, 1.0, LAURENT_POINTS)
+        if abs(value / (2j * math.pi) - coeffs[n]) <= 10**3 * error + 10.0**-12:
+            found.append(p)
+    if len(found) != 1:
+        raise ArithmeticError(f"expected one weight power, found {found}")
+    return found[0]
+
+
+def laurent_weight_at(index: Any, x: Any, y: Any) -> complex:
+    """The weight z^p of f(z) in the loop integral that gives a_index (``laurent_weight_power``),
+    at z = x + i y."""
+    p = laurent_weight_power(index)
+    return _point(x, y) ** p
+
+
+@dataclass(frozen=True)
+class SourcePoint:
+    """The non-analytic field f = k (z*)^n of (10.51)-(10.56) at one point z = x + i y:
+    ``field_star`` f* = fx + i fy; ``source_star`` s* = rho - i I = 2 df*/dz; ``rho`` and
+    ``current`` I; ``potential`` phi = Phi + i A = (1/2) integral of f dz at fixed z*; ``phi``,
+    ``a``; the longitudinal field fL* = grad Phi and the transverse field fT* = curl A, each
+    written Fx + i Fy (``longitudinal``, ``transverse``, and their sum ``total``);
+    ``div_longitudinal`` = div fL* and ``curl_transverse`` = curl fT*."""
+
+    field_star: complex
+    source_star: complex
+    rho: float
+    current: float
+    potential: complex
+    phi: float
+    a: float
+    longitudinal: complex
+    transverse: complex
+    total: complex
+    div_longitudinal: float
+    curl_transverse: float
+
+
+def conjugate_power_field_at(
+    strength_re: Any, strength_im: Any, power: Any, x: Any, y: Any
+) -> SourcePoint:
+    """``conjugate_power_field``'s exact polynomials evaluated at the point (x, y) (exact for
+    rational x, y and k; floats convert exactly)."""
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    p = _conjugate_power_polys(strength_re, strength_im, power)
+    u, v = Fraction(x), Fraction(y)
+
+    def at(poly: Poly) -> complex:
+        return complex(poly.at(u, v))
+
+    def vector(pair: tuple[Poly, Poly]) -> complex:
+        return at(pair[0] + pair[1] * I_UNIT)
+
+    source = at(p.s_star)
+    (lx, ly), (tx, ty) = p.longitudinal, p.transverse
+    potential = at(zpoly_to_xy(p.phi_z))
+    return SourcePoint(
+        field_star=at(p.fstar),
+        source_star=source,
+        rho=source.real,
+        current=-source.imag,
+        potential=potential,
+        phi=at(p.big_phi).real,
+        a=at(p.a).real,
+        longitudinal=vector(p.longitudinal),
+        transverse=vector(p.transverse),
+        total=vector((lx + tx, ly + ty)),
+        div_longitudinal=at(divergence(lx, ly)).real,
+        curl_transverse=at(curl_z(tx, ty)).real,
+    )
+
+
+@dataclass(frozen=True)
+class StereographicLengths:
+    """The lengths of Fig. 10.15 for the point P at the central angle theta on a sphere of
+    diameter D (N on the z-plane, S on the w-plane): ``z_radius`` |z| and ``w_radius`` |w| of
+    its two images, the chords ``south_chord`` SP and ``north_chord`` NP, P's depth below N
+    (``north_depth``), its height above S (``south_height``) and the angle NSP at S between the
+    axis and the chord SP (``south_angle``, radians), the angle the figure marks theta/2."""
+
+    z_radius: float
+    w_radius: float
+    south_chord: float
+    north_chord: float
+    north_depth: float
+    south_height: float
+    south_angle: float
+
+
+def stereographic_lengths(theta: Any, diameter: Any) -> StereographicLengths:
+    """The construction of Fig. 10.15 in coordinates: S at the origin, N at height D, P on the
+    circle of radius D/2 about the centre at angle theta from N; the line S -> P continued to
+    height D gives |z|, the line N -> P continued to height 0 gives |w|."""
+    inputs.positive(diameter, "diameter")
+    inputs.real(theta, "theta")
+    t, d = float(theta), float(diameter)
+    if not 0 < t < math.pi:
+        raise ValueError("theta must be in (0, pi): P between N and S")
+    r = d / 2
+    px, py = r * math.sin(t), r + r * math.cos(t)
+    return StereographicLengths(
+        z_radius=px * d / py,
+        w_radius=px * d / (d - py),
+        south_chord=math.hypot(px, py),
+        north_chord=math.hypot(px, d - py),
+        north_depth=d - py,
+        south_height=py,
+        south_angle=math.atan2(px, py),
+    )
+
+
+def stereographic_preimage_radius(w_radius: Any, diameter: Any) -> float:
+    """|z| of the point whose image is at distance |w| from S: project the w-point onto the
+    sphere along the line to N, then from S onto the z-plane (Fig. 10.15)."""
+    inputs.positive(w_radius, "w_radius")
+    inputs.positive(diameter, "diameter")
+    d, rho = float(diameter), float(w_radius)
+    # the line from N = (0, d) to (rho, 0): points (t rho, d - t d); on the sphere
+    # x^2 + (y - d/2)^2 = (d/2)^2 where t^2 (rho^2 + d^2) = t d^2
+    t = d * d / (rho * rho + d * d)
+    px, py = t * rho, d - t * d
+    return px * d / py
 
 
 # -------------------------------------------------------------------------------------------

@@ -10,6 +10,7 @@ from __future__ import annotations
 import cmath
 import math
 import re
+from collections.abc import Callable
 from fractions import Fraction
 
 import mpmath
@@ -542,3 +543,282 @@ def test_the_definition_factors_make_rho_the_divergence() -> None:
     the prefactor 1/2."""
     factors = cf.source_field_factors()
     assert (factors.source, factors.potential, factors.potential_prefactor) == (2, 2, HALF)
+
+
+# --- formulas at a point (the models of the formula claims) ----------------------------------
+
+ANGLES = st.floats(min_value=-3.1, max_value=3.1)
+RADII = st.floats(min_value=0.1, max_value=10)
+COEFFICIENTS = st.floats(min_value=-5, max_value=5, allow_nan=False)
+
+
+def z_derivative(func: Callable[[complex], complex], z: complex) -> tuple[complex, complex]:
+    """Central differences of func along x and along i y (equal for an analytic function)."""
+    h = 1e-6 * abs(z)
+    along_x = (func(z + h) - func(z - h)) / (2 * h)
+    along_y = (func(z + 1j * h) - func(z - 1j * h)) / (2j * h)
+    return along_x, along_y
+
+
+@given(RADII, ANGLES, RADII, ANGLES)
+def test_phasor_sums_obey_the_parallelogram_law(
+    r1: float, phi1: float, r2: float, phi2: float
+) -> None:
+    """|z + z'|^2 + |z - z'|^2 = 2(|z|^2 + |z'|^2) for the diagonals of the parallelogram of
+    z = r e^(i phi) and z' (Fig. 10.6); each is the squared length of the sum, symmetric in z
+    and z' and unchanged when both rotate together (10.25)."""
+    total = cf.phasor_pair_square(r1, phi1, r2, phi2, 1)
+    diff = cf.phasor_pair_square(r1, phi1, r2, phi2, -1)
+    scale = (r1 + r2) ** 2
+    assert close(total + diff, 2 * (r1 * r1 + r2 * r2), 1e-12 * scale)
+    assert total >= -1e-12 * scale
+    assert diff >= -1e-12 * scale
+    z1, z2 = cmath.rect(r1, phi1), cmath.rect(r2, phi2)
+    assert close(total, abs(z1 + z2) ** 2, 1e-12 * scale)
+    assert close(total, cf.phasor_pair_square(r2, phi2, r1, phi1, 1), 1e-12 * scale)
+    assert close(diff, cf.phasor_pair_square(r1, phi1 + 0.7, r2, phi2 + 0.7, -1), 1e-12 * scale)
+    with pytest.raises(ValueError, match="sign"):
+        cf.phasor_pair_square(r1, phi1, r2, phi2, 2)
+
+
+@given(field_powers(), gaussian_integers(), off_origin_points())
+def test_power_potentials_differentiate_to_their_fields(n: int, a: tuple, z: complex) -> None:
+    """The potential of f = a z^n has dphi/dz = f along x and along y (10.33a): a z^(n+1)/(n+1),
+    and a ln z for n = -1 (10.38); Phi and A are its real and imaginary parts and the plotted
+    vector is f* (10.33b); the polar form gives the same point (Figs. 10.9-10.14)."""
+    if a == (0, 0):
+        a = (1, 0)
+    p = cf.power_field_at(n, z.real, z.imag, *a)
+    assert p.field == complex(*a) * z**n
+    assert p.plotted == p.field.conjugate()
+    assert (p.phi, p.a) == (p.potential.real, p.potential.imag)
+
+    def potential(w: complex) -> complex:
+        return cf.power_field_at(n, w.real, w.imag, *a).potential
+
+    scale = abs(p.field) + abs(p.potential) / abs(z)
+    for derivative in z_derivative(potential, z):
+        assert abs(derivative - p.field) <= 1e-5 * scale
+    q = cf.power_field_polar(n, abs(z), cmath.phase(z), *a)
+    assert abs(q.potential - p.potential) <= 1e-12 * (abs(p.potential) + 1)
+    assert abs(q.field - p.field) <= 1e-12 * abs(p.field)
+    with pytest.raises(ValueError, match="origin"):
+        cf.power_field_at(n, 0, 0)
+
+
+@given(st.integers(0, 5), st.sampled_from(["origin", "infinity"]), off_origin_points())
+def test_multipole_terms_scale_as_their_laurent_power(order: int, where: str, z: complex) -> None:
+    """The field term of a 2^order-pole grows by 2^n when z doubles, n its Laurent power: a
+    negative power for a pole at the origin, a non-negative one at infinity (10.44); there is
+    no 2^0-pole (monopole) at infinity."""
+    if order == 0 and where == "infinity":
+        with pytest.raises(ArithmeticError, match="one term"):
+            cf.multipole_term_at(order, where, z.real, z.imag)
+        return
+    n = cf.laurent_term_of_multipole(order, where)
+    assert (n < 0) == (where == "origin")
+    small = cf.multipole_term_at(order, where, z.real, z.imag)
+    large = cf.multipole_term_at(order, where, 2 * z.real, 2 * z.imag)
+    assert abs(large.field - 2.0**n * small.field) <= 1e-12 * abs(large.field)
+
+
+@given(
+    st.floats(min_value=0.1, max_value=5),
+    st.floats(min_value=0.01, max_value=0.5),
+    off_origin_points(),
+)
+def test_a_dipole_pair_is_two_opposite_line_sources(a: float, sep: float, z: complex) -> None:
+    """The pair +a at -D/2, -a at +D/2 is the sum of two line sources (10.40); its potential
+    differentiates to its field (10.33a); far away, or for a small separation D, the field
+    divided by D is the point dipole -a/z^2 of (10.41a)."""
+    if min(abs(z - sep / 2), abs(z + sep / 2)) < 0.1:
+        z = z * 3
+    pair = cf.dipole_pair_at(a, sep, z.real, z.imag)
+    plus = cf.power_field_at(-1, z.real + sep / 2, z.imag, a, 0)
+    minus = cf.power_field_at(-1, z.real - sep / 2, z.imag, a, 0)
+    assert abs(pair.field - (plus.field - minus.field)) <= 1e-12 * (abs(plus.field) + 1)
+
+    def potential(w: complex) -> complex:
+        return cf.dipole_pair_at(a, sep, w.real, w.imag).potential
+
+    for derivative in z_derivative(potential, z):
+        assert abs(derivative - pair.field) <= 1e-5 * (abs(pair.field) + a)
+    tiny = 1e-5
+    small = cf.dipole_pair_at(a, tiny, z.real, z.imag).field / tiny
+    point = cf.line_multipole_at(a, 1, z.real, z.imag).field
+    assert abs(small - point) <= 1e-6 * abs(point)
+
+
+@given(st.integers(0, 4), st.floats(min_value=0.1, max_value=5), off_origin_points())
+def test_line_multipoles_are_derivatives_of_the_line_source(k: int, a: float, z: complex) -> None:
+    """The k-th multipole is the line source a/z differentiated k times and its potential
+    a ln z differentiated k times (10.40)-(10.43): the potential differentiates to the field,
+    the next field is the derivative of this one, a factor scales both, and the polar form
+    gives the same point."""
+    m = cf.line_multipole_at(a, k, z.real, z.imag)
+    nxt = cf.line_multipole_at(a, k + 1, z.real, z.imag)
+    if k == 0:
+        assert m.field == cf.power_field_at(-1, z.real, z.imag, a, 0).field
+
+    def potential(w: complex) -> complex:
+        return cf.line_multipole_at(a, k, w.real, w.imag).potential
+
+    def field(w: complex) -> complex:
+        return cf.line_multipole_at(a, k, w.real, w.imag).field
+
+    for derivative in z_derivative(potential, z):
+        assert abs(derivative - m.field) <= 1e-5 * (abs(m.field) + abs(m.potential) / abs(z))
+    for derivative in z_derivative(field, z):
+        assert abs(derivative - nxt.field) <= 1e-5 * (abs(nxt.field) + abs(m.field) / abs(z))
+    half = cf.line_multipole_at(a, k, z.real, z.imag, HALF)
+    assert abs(half.field - m.field / 2) <= 1e-15 * abs(m.field)
+    polar = cf.line_multipole_polar(a, k, abs(z), cmath.phase(z))
+    assert abs(polar.field - m.field) <= 1e-12 * abs(m.field)
+
+
+@given(
+    st.floats(min_value=0.1, max_value=5),
+    st.floats(min_value=0.1, max_value=5),
+    st.floats(min_value=0.1, max_value=1.4),
+)
+def test_dipole_level_lines_pass_through_their_level(a: float, level: float, theta: float) -> None:
+    """On the ray at angle theta the point-dipole potential a/z (10.42) takes the level Phi or A
+    at the distance the model gives, and twice the level at half that distance (Fig. 10.11);
+    a ray that never reaches the level is refused."""
+    for part, angle, value in (("phi", theta, level), ("a", -theta, level), ("a", theta, -level)):
+        r = cf.dipole_level_radius(a, value, angle, part)
+        at = cf.line_multipole_polar(a, 1, r, angle)
+        assert close(getattr(at, part), value, 1e-12 * abs(value))
+        assert close(cf.dipole_level_radius(a, 2 * value, angle, part), r / 2, 1e-12 * r)
+    with pytest.raises(ValueError, match="does not reach"):
+        cf.dipole_level_radius(a, -level, theta, "phi")
+
+
+@given(st.lists(COEFFICIENTS, min_size=1, max_size=8), st.integers(-4, 1), off_origin_points())
+def test_laurent_potentials_differentiate_to_their_series(
+    coeffs: list, lowest: int, z: complex
+) -> None:
+    """The potential series of (10.44) differentiates term by term to the field series
+    sum a_n z^n; with z replaced by w = 1/z it is the same series evaluated at w."""
+    total = cf.laurent_potential_at(coeffs, lowest, z.real, z.imag)
+    series = sum(c * z ** (lowest + j) for j, c in enumerate(coeffs))
+
+    def potential(w: complex) -> complex:
+        return cf.laurent_potential_at(coeffs, lowest, w.real, w.imag)
+
+    scale = sum(abs(c) * abs(z) ** (lowest + j) for j, c in enumerate(coeffs))
+    for derivative in z_derivative(potential, z):
+        assert abs(derivative - series) <= 1e-5 * (scale + abs(total) / abs(z) + 1)
+    w = 1 / z
+    inverted = cf.inverted_laurent_potential_at(coeffs, lowest, z.real, z.imag)
+    assert inverted == cf.laurent_potential_at(coeffs, lowest, w.real, w.imag)
+
+
+@pytest.mark.parametrize("index", range(-5, 6))
+def test_the_laurent_weight_is_z_to_minus_n_minus_one(index: int) -> None:
+    """The loop integral (1/(2 pi i)) loop z^p f dz returns a_n for p = -n - 1 only (10.44)."""
+    p = cf.laurent_weight_power(index)
+    assert p == -index - 1
+    z = complex(0.7, -0.4)
+    assert cf.laurent_weight_at(index, z.real, z.imag) == z**p
+    with pytest.raises(ValueError, match="index"):
+        cf.laurent_weight_power(index + 11)
+
+
+@given(st.lists(COEFFICIENTS, min_size=1, max_size=6), off_origin_points())
+def test_a_polynomial_is_its_own_taylor_series(coeffs: list, z: complex) -> None:
+    """f(z) = sum c_k z^k, k >= 0: f(0) = c_0 (the n = 0 term of (10.45c)) and f'(0) = c_1."""
+    f = cf.analytic_polynomial_at(coeffs, z.real, z.imag)
+    assert abs(f - sum(c * z**k for k, c in enumerate(coeffs))) <= 1e-9 * (1 + abs(f))
+    assert cf.analytic_polynomial_at(coeffs, 0, 0) == coeffs[0]
+    h = 1e-6
+    slope = cf.analytic_polynomial_at(coeffs, h, 0) - cf.analytic_polynomial_at(coeffs, -h, 0)
+    c1 = coeffs[1] if len(coeffs) > 1 else 0.0
+    assert abs(slope / (2 * h) - c1) <= 1e-6 * (1 + sum(map(abs, coeffs)))
+
+
+@given(gaussian_integers(), NONNEGATIVE_POWERS, off_origin_points())
+def test_non_analytic_fields_at_a_point_are_their_polynomials(k: tuple, n: int, z: complex) -> None:
+    """At every point the sources, potentials and fields of f = k (z*)^n are the values of the
+    printed polynomials (10.51)-(10.56); fL* + fT* = f* = k* z^n, and s* = 2 df*/dz is twice
+    (1/2)(d/dx - i d/dy) of f* by central differences (10.46a)."""
+    if k == (0, 0):
+        k = (1, 0)
+    field = cf.conjugate_power_field(*k, n)
+    at = cf.conjugate_power_field_at(*k, n, z.real, z.imag)
+    size = (1 + abs(complex(*k))) * (1 + abs(z)) ** (n + 1)
+    for value, view in ((at.rho, field.rho), (at.phi, field.phi), (at.a, field.a)):
+        assert close(value, view_at(view, z), 1e-9 * size)
+    lx = view_at(field.longitudinal_x, z) + 1j * view_at(field.longitudinal_y, z)
+    assert abs(at.longitudinal - lx) <= 1e-9 * size
+    fstar = complex(*k).conjugate() * z**n
+    assert abs(at.field_star - fstar) <= 1e-9 * size
+    assert abs(at.longitudinal + at.transverse - fstar) <= 1e-9 * size
+    h = 1e-5
+
+    def star(w: complex) -> complex:
+        return cf.conjugate_power_field_at(*k, n, w.real, w.imag).field_star
+
+    d_dx = (star(z + h) - star(z - h)) / (2 * h)
+    d_dy = (star(z + 1j * h) - star(z - 1j * h)) / (2 * h)
+    assert abs(at.source_star - (d_dx - 1j * d_dy)) <= 1e-6 * size
+
+
+@given(sphere_angles(), sphere_diameters(), RADII)
+def test_stereographic_lengths_obey_thales_and_invert_radii(
+    theta: float, diameter: float, rho: float
+) -> None:
+    """The angle NPS is right (Thales): SP^2 + NP^2 = D^2, the depth of P below N is NP^2/D and
+    its height above S is SP^2/D; |z| |w| = D^2, |z| = D tan(NSP) with the inscribed angle NSP
+    half the central angle (Fig. 10.15); the image of a z-radius through the sphere and back is
+    that radius."""
+    s = cf.stereographic_lengths(theta, diameter)
+    d2 = diameter * diameter
+    assert close(s.south_chord**2 + s.north_chord**2, d2, 1e-12 * d2)
+    assert close(s.north_depth * diameter, s.north_chord**2, 1e-12 * d2)
+    assert close(s.south_height * diameter, s.south_chord**2, 1e-12 * d2)
+    assert close(s.z_radius * s.w_radius, d2, 1e-9 * d2)
+    assert close(s.z_radius, diameter * math.tan(s.south_angle), 1e-9 * max(1, s.z_radius))
+    assert close(2 * s.south_angle, theta, 1e-12)
+    back = cf.stereographic_preimage_radius(cf.stereographic_image_radius(rho, diameter), diameter)
+    assert close(back, rho, 1e-9 * rho)
+    with pytest.raises(ValueError, match="theta"):
+        cf.stereographic_lengths(0.0, diameter)
+
+
+@given(st.floats(min_value=-1e3, max_value=1e3), st.floats(min_value=-1e3, max_value=1e3))
+def test_the_inverse_map_rebuilds_x_and_y_from_z_and_zstar(x: float, y: float) -> None:
+    """x and y are recovered from z = x + iy and z* = x - iy through the inverse map (10.31)."""
+    p = cf.coordinates_from_z(x, y)
+    assert close(p.x, x, 1e-12 * (1 + abs(x) + abs(y)))
+    assert close(p.y, y, 1e-12 * (1 + abs(x) + abs(y)))
+
+
+@given(gaussian_integers(), gaussian_integers(), gaussian_integers())
+def test_the_chain_rule_sees_z_and_zstar_apart(c: tuple, p: tuple, q: tuple) -> None:
+    """For an analytic f (df/dy = i df/dx, Cauchy-Riemann) df/dz is df/dx and df/dz* = 0; for
+    f = c z*, df/dz = 0 and df/dz* = c; both derivatives are linear in the partials (10.31).
+    The conjugate potential phi* = Phi - iA of an analytic phi with dphi/dz = f has
+    dphi*/dz* = f*, the plotted field (10.33b)."""
+    fx = complex(*c)
+    analytic = cf.chain_rule_derivatives(fx.real, fx.imag, (1j * fx).real, (1j * fx).imag)
+    assert abs(analytic.dz - fx) <= 1e-12 * (1 + abs(fx))
+    assert abs(analytic.dzstar) <= 1e-12 * (1 + abs(fx))
+    anti = cf.chain_rule_derivatives(fx.real, fx.imag, (-1j * fx).real, (-1j * fx).imag)
+    assert abs(anti.dz) <= 1e-12 * (1 + abs(fx))
+    assert abs(anti.dzstar - fx) <= 1e-12 * (1 + abs(fx))
+    a, b = cf.chain_rule_derivatives(*p, 0, 0), cf.chain_rule_derivatives(0, 0, *q)
+    both = cf.chain_rule_derivatives(*p, *q)
+    assert abs(both.dz - (a.dz + b.dz)) <= 1e-12 * (1 + abs(complex(*p)) + abs(complex(*q)))
+    # phi analytic with phi' = f: Phi_x = Re f, Phi_y = -Im f, A_x = Im f, A_y = Re f
+    star = cf.conjugate_potential_derivative(fx.real, -fx.imag, fx.imag, fx.real)
+    assert abs(star - fx.conjugate()) <= 1e-12 * (1 + abs(fx))
+
+
+@pytest.mark.parametrize("m", [m for m in range(-6, 7) if m])
+def test_a_potential_term_belongs_to_a_two_to_the_abs_m_pole(m: int) -> None:
+    """The potential term a_(m-1) z^m/m comes from the field term a_(m-1) z^(m-1): a 2^|m|-pole,
+    at z = 0 for m < 0 and at infinity for m > 0 (10.44); m = 0 is the logarithm."""
+    assert cf.potential_term_poles(m) == 2 ** abs(m)
+    with pytest.raises(ValueError, match="ln z"):
+        cf.potential_term_poles(0)
