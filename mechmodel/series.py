@@ -220,6 +220,23 @@ def exp_series_derivative_term(power: Any) -> ExpDerivativeTerm:
     )
 
 
+def exp_series_polynomial(rate: Any, time: Any, order: Any) -> Any:
+    """The e-series (10.5a) of e^(r t) cut after its (r t)^``order`` term: sum_k c_k (r t)^k,
+    the coefficients c_k those of the binomial limit (``exp_series_coefficient``: counted with
+    Pascal's rule, not with factorials). Plain operators: symbols give an expression."""
+    order = inputs.count(order, "order")
+    x = rate * time
+    return sum((exp_series_coefficient(k) * x**k for k in range(order + 1)), 0)
+
+
+def exp_series_polynomial_rate(rate: Any, time: Any, order: Any) -> Any:
+    """The time rate d/dt of ``exp_series_polynomial`` (10.9): the power rule (10.8b) applied
+    term by term to that polynomial in t, whose coefficients are c_k r^k."""
+    order = inputs.count(order, "order")
+    coefficients = [exp_series_coefficient(k) * rate**k for k in range(order + 1)]
+    return sum((c * time**k for k, c in enumerate(polynomial_derivative(coefficients))), 0)
+
+
 def exp_to_log_rotation() -> float:
     """The quarter turn that carries the graph of y = e^x onto the log potential U = -ln y
     (Fig. 10.1: "rotate your y = e^x graph by 90 degrees"). Each candidate rotation by j * 90
@@ -245,6 +262,13 @@ def _log_potential_slope(y: Any) -> mpmath.mpf:
         h = mpmath.mpf(10) ** (-(DIGITS // 3))
         yy = _mp(Fraction(y))
         return (-mpmath.log(yy + h) + mpmath.log(yy - h)) / (2 * h)
+
+
+def log_potential_force(y: Any) -> float:
+    """The force F(y) = -dU/dy of the log potential U(y) = -ln y (Fig. 10.1b, c), from the
+    slope of U by a difference quotient at high precision (it is 1/y)."""
+    inputs.positive(y, "y")
+    return float(-_log_potential_slope(y))
 
 
 def log_potential_force_moment(y: Any) -> float:
@@ -578,6 +602,37 @@ def derivative_term(power: Any, derivative: Any) -> DerivativeTerm:
     return DerivativeTerm(factors, factor, p if factor else 0)
 
 
+def power_increment(t: Any, dt: Any, power: Any) -> Any:
+    """The rise x(t + dt) - x(t) of the power curve x = t^n over a step dt ((10.7a), (10.8a)):
+    (t + dt)^n expanded with the coefficients of ``binomial_expansion`` (the multiplication
+    box), less t^n. Plain operators: symbols give an expression."""
+    n = inputs.count(power, "power")
+    row = binomial_expansion(n)
+    return sum((row[j] * t ** (n - j) * dt**j for j in range(n + 1)), 0) - t**n
+
+
+def secant_slope(t: Any, dt: Any, power: Any) -> Any:
+    """The slope ratio dx/dt of the secant of x = t^n from t to t + dt ((10.7a), (10.8a))."""
+    return power_increment(t, dt, power) / dt
+
+
+def power_derivative(t: Any, power: Any, coefficient: Any = 1) -> Any:
+    """The tangent slope d/dt (A t^n) of (10.7b), (10.8b): A times the ``power_rule``'s factor
+    times t to its lowered power (the secant slope's limit as dt shrinks)."""
+    rule = power_rule(power)
+    return coefficient * rule.factor * t**rule.power
+
+
+def nth_difference_quotient(difference: Any, step: Any, order: Any) -> Any:
+    """Leibniz's d^n x/dt^n of (10.12b): the n-th difference d^n x of x, divided by the step dt
+    once for each of the n difference quotients taken (the d/dt of d/dt of ...): over dt^n."""
+    n = inputs.count(order, "order")
+    value = difference
+    for _ in range(n):
+        value = value / step
+    return value
+
+
 def maclaurin_divisor(power: Any) -> int:
     """c_k = x^(k)(0) / D_k: the k-th derivative of c_k t^k at t = 0 is D_k c_k, D_k the product
     of the power-rule factors (10.11); D_2 = 2 gives c2 = a(0)/2."""
@@ -590,6 +645,15 @@ def maclaurin_factorial(power: Any) -> int:
     divisor D_k (it is k)."""
     k = inputs.count(power, "power")
     return inverse_factorial(maclaurin_divisor(k))
+
+
+def maclaurin_polynomial(derivatives: list[Any], t: Any) -> Any:
+    """The Maclaurin series (10.12a) cut after the given derivatives at t = 0 (x(0), v(0), a(0),
+    j(0), ...): sum_k x^(k)(0) t^k / D_k, with the divisors D_k of (10.11) found by applying the
+    power rule k times (``maclaurin_divisor``). Plain operators: symbols give an expression."""
+    return sum(
+        (Fraction(1, maclaurin_divisor(k)) * d * t**k for k, d in enumerate(derivatives)), 0
+    )
 
 
 @dataclass(frozen=True)
@@ -734,6 +798,19 @@ def sinusoid_partial_sum(kind: str, x: Any, order: Any) -> Any:
     return _sum_terms(_sinusoid_terms(kind, order), x)
 
 
+def sinusoid_series(kind: str, omega: Any, t: Any, order: Any) -> Any:
+    """The sine or cosine series (10.16) of sin(w t) or cos(w t) up to the power ``order``, its
+    zero terms included: sum_n x^(n)(0) t^n / D_n with the derivatives x^(n)(0) = sign w^n
+    (cos 0) or 0 (sin 0) of (10.15) (``sinusoid_derivative``) and the Maclaurin divisors D_n
+    (10.11). Plain operators: symbols give an expression."""
+    order = inputs.count(order, "order")
+    total: Any = 0
+    for n in range(order + 1):
+        d = sinusoid_derivative(kind, n)
+        total += Fraction(d.value_at_zero, maclaurin_divisor(n)) * omega**d.omega_power * t**n
+    return total
+
+
 def sinusoid_remainder_bound(x: Any, order: Any) -> Any:
     """Lagrange bound |x|^(o+1)/(o+1)! on |sin x - partial sum| and |cos x - partial sum|
     (every derivative of sin and cos is at most 1 in size)."""
@@ -876,6 +953,15 @@ def phasor_derivative(order: Any) -> PhasorDerivative:
         factor = factor * complex(0, -1)
         power += 1
     return PhasorDerivative(factor, power)
+
+
+def phasor_rate(omega: Any, x: Any, order: Any) -> Any:
+    """The ``order``-th time derivative of x(t) = x(0) e^(-i w t) as a multiple of x(t)
+    ((10.22b), (10.23a)): the ``phasor_derivative`` factor times w^power times x."""
+    d = phasor_derivative(order)
+    f = d.factor  # a power of -i: real (+-1, kept an exact int) for an even order
+    factor = int(f.real) if f.imag == 0 and f.real.is_integer() else f
+    return factor * omega**d.omega_power * x
 
 
 def unit_circle_radius(samples: Any = 12) -> float:

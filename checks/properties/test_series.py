@@ -8,6 +8,7 @@ working precision.
 from __future__ import annotations
 
 import cmath
+import itertools
 import math
 from fractions import Fraction
 
@@ -527,3 +528,94 @@ def test_the_sinusoid_minimum_order_is_the_first_within_the_tolerance(
     at_end = abs(series.sinusoid_partial_sum(kind, two, order) - f(two))
     error = series.sinusoid_max_error(kind, order, 2)
     assert at_end <= error <= series.sinusoid_remainder_bound(two, order) * (1 + REL)
+
+
+# -- the formulas of the text, as functions (formula claims, design 2a) --------------------------
+
+
+@given(st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k))
+def test_the_log_potential_force_is_one_over_y(y: float) -> None:
+    """F(y) = -dU/dy of U = -ln y is 1/y (Fig. 10.1c): the force times y is the moment 1, and
+    the force halves where y doubles."""
+    force = series.log_potential_force(y)
+    assert math.isclose(force, 1 / y, rel_tol=1e-15)
+    assert math.isclose(force * y, series.log_potential_force_moment(y), rel_tol=1e-15)
+    assert math.isclose(series.log_potential_force(2 * y), force / 2, rel_tol=1e-14)
+
+
+@given(st.integers(min_value=0, max_value=8), rationals(-5, 5, 6), rationals(1, 3, 6))
+def test_the_nth_difference_quotient_of_t_to_the_n_is_n_factorial(
+    n: int, t: Fraction, h: Fraction
+) -> None:
+    """Leibniz's d^n x/dt^n (10.12b) divides the n-th difference by dt^n: the n-th forward
+    difference of x = t^n over steps h is n! h^n whatever t and h, so the quotient is the n-th
+    derivative n! exactly; one dt fewer leaves a factor h."""
+    values = [(t + j * h) ** n for j in range(n + 1)]
+    for _ in range(n):  # the n-th forward difference
+        values = [b - a for a, b in itertools.pairwise(values)]
+    (difference,) = values
+    assert series.nth_difference_quotient(difference, h, n) == math.factorial(n)
+    if n:
+        assert series.nth_difference_quotient(difference, h, n - 1) == math.factorial(n) * h
+
+
+@given(rationals(-3, 3, 8), rationals(-3, 3, 8), st.integers(min_value=0, max_value=12))
+def test_the_e_series_polynomial_and_its_rate(r: Fraction, t: Fraction, order: int) -> None:
+    """The e-series of e^(r t) cut at (r t)^o is the partial sum of (10.6) at x = r t, and its
+    time rate is r times the series cut one order lower: d/dt e^(r t) = r e^(r t) (10.9)."""
+    polynomial = series.exp_series_polynomial(r, t, order)
+    assert polynomial == series.exp_partial_sum(r * t, order, exact=True)
+    rate = series.exp_series_polynomial_rate(r, t, order)
+    assert rate == (r * series.exp_series_polynomial(r, t, order - 1) if order else 0)
+
+
+@given(rationals(-5, 5, 8), rationals(-2, 2, 8), st.integers(min_value=0, max_value=10))
+def test_the_secant_slope_tends_to_the_power_rule(t: Fraction, h: Fraction, n: int) -> None:
+    """x(t + dt) - x(t) for x = t^n is the binomial expansion less t^n ((10.7a), (10.8a)); the
+    secant slope exceeds the tangent slope n t^(n-1) (10.8b) by the higher terms
+    B(n, j) t^(n-j) dt^(j-1), j >= 2, which vanish with dt."""
+    assert series.power_increment(t, h, n) == (t + h) ** n - t**n
+    assert series.power_derivative(t, n) == (n * t ** (n - 1) if n else 0)
+    assert series.power_derivative(t, n, coefficient=h) == h * series.power_derivative(t, n)
+    if h:
+        higher = sum(
+            (math.comb(n, j) * t ** (n - j) * h ** (j - 1) for j in range(2, n + 1)), Fraction(0)
+        )
+        assert series.secant_slope(t, h, n) - series.power_derivative(t, n) == higher
+
+
+@given(st.lists(rationals(-9, 9, 6), min_size=0, max_size=9), rationals(-3, 3, 8))
+def test_the_maclaurin_series_of_a_polynomial_is_the_polynomial(
+    coefficients: list[Fraction], t: Fraction
+) -> None:
+    """A polynomial sum c_k t^k has the derivatives k! c_k at t = 0 ((10.11)); the Maclaurin
+    series (10.12a) built from them gives the polynomial back, exactly."""
+    derivatives = [math.factorial(k) * c for k, c in enumerate(coefficients)]
+    expected = sum((c * t**k for k, c in enumerate(coefficients)), Fraction(0))
+    assert series.maclaurin_polynomial(derivatives, t) == expected
+
+
+@given(
+    st.sampled_from(["sin", "cos"]),
+    rationals(-3, 3, 8),
+    rationals(-3, 3, 8),
+    st.integers(min_value=0, max_value=14),
+)
+def test_the_sinusoid_series_in_w_and_t(kind: str, w: Fraction, t: Fraction, order: int) -> None:
+    """The series (10.16) of sin(w t), cos(w t) is the partial sum at x = w t, exactly; it is
+    odd in t for the sine, even for the cosine."""
+    value = series.sinusoid_series(kind, w, t, order)
+    assert value == series.sinusoid_partial_sum(kind, w * t, order)
+    assert series.sinusoid_series(kind, w, -t, order) == (-value if kind == "sin" else value)
+
+
+@given(st.floats(min_value=0.01, max_value=10), plane_points(), st.integers(0, 12))
+def test_each_phasor_derivative_multiplies_by_minus_i_w(
+    w: float, point: tuple[float, float], n: int
+) -> None:
+    """x(t) = x(0) e^(-i w t) has d^n x/dt^n = (-i w)^n x(t) ((10.22)); the second derivative
+    is -w^2 x, the Newton-Hooke equation (10.23a)."""
+    x = complex(*point)
+    expected = (-1j * w) ** n * x
+    assert cmath.isclose(series.phasor_rate(w, x, n), expected, rel_tol=1e-12, abs_tol=1e-300)
+    assert series.phasor_rate(w, x, 2) == -(w**2) * x
