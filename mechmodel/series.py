@@ -651,9 +651,7 @@ def maclaurin_polynomial(derivatives: list[Any], t: Any) -> Any:
     """The Maclaurin series (10.12a) cut after the given derivatives at t = 0 (x(0), v(0), a(0),
     j(0), ...): sum_k x^(k)(0) t^k / D_k, with the divisors D_k of (10.11) found by applying the
     power rule k times (``maclaurin_divisor``). Plain operators: symbols give an expression."""
-    return sum(
-        (Fraction(1, maclaurin_divisor(k)) * d * t**k for k, d in enumerate(derivatives)), 0
-    )
+    return sum((Fraction(1, maclaurin_divisor(k)) * d * t**k for k, d in enumerate(derivatives)), 0)
 
 
 @dataclass(frozen=True)
