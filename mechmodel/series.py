@@ -25,7 +25,7 @@ from typing import Any
 
 import mpmath
 
-from mechmodel import inputs
+from mechmodel import fields, inputs
 
 DIGITS = 40  # mpmath working precision (significant digits) for e and compound interest
 
@@ -621,6 +621,13 @@ def power_derivative(t: Any, power: Any, coefficient: Any = 1) -> Any:
     times t to its lowered power (the secant slope's limit as dt shrinks)."""
     rule = power_rule(power)
     return coefficient * rule.factor * t**rule.power
+
+
+def parabola_slope(lam: Any, x: Any) -> Any:
+    """Slope dy/dx at ``x`` of the parabola 2 lam y = x^2 of semi-latus rectum ``lam`` (Fig. 9.4,
+    checked after (10.7b)): its height ``fields.parabola_height_for_latus`` is a multiple of
+    x^2, differentiated by the power rule (``power_derivative``)."""
+    return power_derivative(x, 2, coefficient=fields.parabola_height_for_latus(lam, 1))
 
 
 def nth_difference_quotient(difference: Any, step: Any, order: Any) -> Any:

@@ -26,7 +26,7 @@ from checks.properties.strategies import (
     series_arguments,
     series_orders,
 )
-from mechmodel import series
+from mechmodel import fields, series
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
@@ -619,3 +619,14 @@ def test_each_phasor_derivative_multiplies_by_minus_i_w(
     expected = (-1j * w) ** n * x
     assert cmath.isclose(series.phasor_rate(w, x, n), expected, rel_tol=1e-12, abs_tol=1e-300)
     assert series.phasor_rate(w, x, 2) == -(w**2) * x
+
+
+@given(rationals(Fraction(1, 8), 8, 8), rationals(-5, 5, 8), rationals(Fraction(1, 64), 1, 8))
+def test_the_parabola_slope_is_x_over_lambda(lam: Fraction, x: Fraction, h: Fraction) -> None:
+    """The parabola 2 lambda y = x^2 of Fig. 9.4 has the slope dy/dx = x/lambda (after
+    (10.7b)): for a quadratic the centred difference quotient is the slope exactly, for any
+    step h."""
+    height = fields.parabola_height_for_latus
+    slope = series.parabola_slope(lam, x)
+    assert slope == (height(lam, x + h) - height(lam, x - h)) / (2 * h)
+    assert slope == x / lam
