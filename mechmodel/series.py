@@ -432,6 +432,39 @@ def binomial_expansion(power: Any) -> list[int]:
     return coefficients
 
 
+def binomial_terms(x: Any, y: Any, n: Any, first: Any, last: Any, end: str = "x") -> Any:
+    """The sum of the terms B(n, k) x^(n-k) y^k of (x + y)^n for k = ``first`` .. ``last`` (the
+    binomial series after (10.4)), the coefficients from ``binomial_expansion``; ``end = "y"``
+    counts the terms from the y^n end instead: k = n - ``last`` .. n - ``first``."""
+    n = inputs.count(n, "n")
+    first, last = inputs.count(first, "first"), inputs.count(last, "last")
+    if end not in ("x", "y"):
+        raise ValueError(f"end must be 'x' or 'y', got {end!r}")
+    row = binomial_expansion(n)
+    ks = range(n - last, n - first + 1) if end == "y" else range(first, last + 1)
+    return sum((row[k] * x ** (n - k) * y**k for k in ks if 0 <= k <= n), 0)
+
+
+def compound_binomial_terms(rate: Any, time: Any, n: Any, last: Any) -> Any:
+    """The binomial series of (1 + r t/n)^n (the step from (10.4) to (10.5a)) through its
+    (r t/n)^``last`` term: ``binomial_terms`` with x = 1, y = r t/n."""
+    return binomial_terms(1, rate * time / n, n, 0, last)
+
+
+def falling_factorial_leading_term(n: Any, factors: Any) -> Any:
+    """The leading term of n(n-1)...(n-k+1), k = ``factors``, as a polynomial in n: the power of
+    n that cancels the n^k of (r t/n)^k for huge n (after (10.4)). The product is multiplied
+    out factor by factor (coefficient lists, constant term first) and its top term kept."""
+    k = inputs.count(factors, "factors")
+    coefficients = [1]
+    for j in range(k):  # times (n - j)
+        shifted = [0, *coefficients]
+        scaled = [-j * c for c in coefficients] + [0]
+        coefficients = [a + b for a, b in zip(shifted, scaled, strict=True)]
+    degree = max(d for d, c in enumerate(coefficients) if c)
+    return coefficients[degree] * n**degree
+
+
 def binomial_box_power(top_power: Any) -> int:
     """Power of the product computed in a multiplication box: the top row (x + y)^n times the
     factor (x + y) on the left is (x + y)^(n + 1); read off the expansion's length."""

@@ -630,3 +630,37 @@ def test_the_parabola_slope_is_x_over_lambda(lam: Fraction, x: Fraction, h: Frac
     slope = series.parabola_slope(lam, x)
     assert slope == (height(lam, x + h) - height(lam, x - h)) / (2 * h)
     assert slope == x / lam
+
+
+@given(
+    rationals(-3, 3, 6),
+    rationals(-3, 3, 6),
+    binomial_powers().filter(lambda n: n <= 25),
+    st.data(),
+)
+def test_binomial_terms_sum_to_the_power(
+    x: Fraction, y: Fraction, n: int, data: st.DataObject
+) -> None:
+    """All the terms of the binomial series (after (10.4)) add up to (x + y)^n; counted from the
+    y^n end they are the terms of (y + x)^n counted from its first; the series of (1 + r t/n)^n
+    is the one at x = 1, y = r t/n."""
+    assert series.binomial_terms(x, y, n, 0, n) == (x + y) ** n
+    a = data.draw(st.integers(0, n))
+    b = data.draw(st.integers(a, n))
+    assert series.binomial_terms(x, y, n, a, b, end="y") == series.binomial_terms(y, x, n, a, b)
+    if a < n:  # the first a + 1 terms and the last n - a terms
+        head = series.binomial_terms(x, y, n, 0, a)
+        assert head + series.binomial_terms(x, y, n, 0, n - a - 1, "y") == (x + y) ** n
+    if n:
+        assert series.compound_binomial_terms(x, y, n, n) == (1 + x * y / n) ** n
+
+
+@given(st.integers(min_value=0, max_value=12), st.integers(min_value=1, max_value=10**6))
+def test_the_falling_factorial_grows_like_its_leading_power(k: int, n: int) -> None:
+    """n(n-1)...(n-k+1) has the leading term n^k ("huge n makes n(n-1) cancel n^2", after
+    (10.4)): for n >= k the ratio of the product to n^k lies between 1 - k(k-1)/(2n) and 1."""
+    assert series.falling_factorial_leading_term(n, k) == n**k
+    product = math.prod(n - j for j in range(k))
+    if n >= k:
+        ratio = Fraction(product, series.falling_factorial_leading_term(n, k))
+        assert 1 - Fraction(k * (k - 1), 2 * n) <= ratio <= 1
