@@ -836,6 +836,15 @@ def sinusoid_partial_sum(kind: str, x: Any, order: Any) -> Any:
     return _sum_terms(_sinusoid_terms(kind, order), x)
 
 
+def sinusoid_coefficient_in_omega(kind: str, omega: Any, power: Any) -> Any:
+    """Maclaurin coefficient c_n = x^(n)(0)/n! of sin(w t) or cos(w t) as a function of w (the
+    list after (10.15)): the n-th derivative of (10.15) at t = 0, sign w^n (cos 0) or 0 (sin 0),
+    over the divisor D_n of (10.11). Plain operators: a symbol w gives an expression."""
+    n = inputs.count(power, "power")
+    d = sinusoid_derivative(kind, n)
+    return Fraction(d.value_at_zero, maclaurin_divisor(n)) * omega**d.omega_power
+
+
 def sinusoid_series(kind: str, omega: Any, t: Any, order: Any) -> Any:
     """The sine or cosine series (10.16) of sin(w t) or cos(w t) up to the power ``order``, its
     zero terms included: sum_n x^(n)(0) t^n / D_n with the derivatives x^(n)(0) = sign w^n

@@ -664,3 +664,14 @@ def test_the_falling_factorial_grows_like_its_leading_power(k: int, n: int) -> N
     if n >= k:
         ratio = Fraction(product, series.falling_factorial_leading_term(n, k))
         assert 1 - Fraction(k * (k - 1), 2 * n) <= ratio <= 1
+
+
+@given(st.sampled_from(["sin", "cos"]), rationals(-3, 3, 8), st.integers(min_value=0, max_value=14))
+def test_the_sinusoid_coefficients_scale_as_w_to_the_n(kind: str, w: Fraction, n: int) -> None:
+    """c_n of sin(w t) or cos(w t) is w^n times the c_n of sin t or cos t (each derivative
+    (10.15) brings one w), and the c_n t^n add up to the series (10.16)."""
+    coefficient = series.sinusoid_coefficient_in_omega(kind, w, n)
+    assert coefficient == series.sinusoid_coefficient(kind, n) * w**n
+    t = Fraction(3, 7)
+    terms = sum(series.sinusoid_coefficient_in_omega(kind, w, k) * t**k for k in range(n + 1))
+    assert terms == series.sinusoid_series(kind, w, t, n)
