@@ -472,6 +472,24 @@ def binomial_box_power(top_power: Any) -> int:
     return len(binomial_expansion(n)) if n >= 0 else 0
 
 
+def binomial_box_row(x: Any, y: Any, top_power: Any, left: str) -> Any:
+    """A row of the multiplication box of (2)-(5): the factor ``left`` (x or y) on the left
+    times each term of the top row (x + y)^n (coefficients of ``binomial_expansion``), added
+    up. Plain operators: symbols give an expression."""
+    if left not in ("x", "y"):
+        raise ValueError(f"left must be 'x' or 'y', got {left!r}")
+    n = inputs.count(top_power, "top_power")
+    factor = x if left == "x" else y
+    row = binomial_expansion(n)
+    return sum((factor * row[k] * x ** (n - k) * y**k for k in range(n + 1)), 0)
+
+
+def binomial_box_product(x: Any, y: Any, top_power: Any) -> Any:
+    """The product worked out in a multiplication box, (x + y)^n (x + y) of (2)-(5): the x row
+    plus the y row (``binomial_box_row``)."""
+    return binomial_box_row(x, y, top_power, "x") + binomial_box_row(x, y, top_power, "y")
+
+
 def binomial_box_expansion(top_power: Any) -> list[int]:
     """Coefficients of the box product (x + y)^n (x + y) with the top row (x + y)^n (2)-(5)."""
     return binomial_expansion(binomial_box_power(top_power))

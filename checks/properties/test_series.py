@@ -675,3 +675,12 @@ def test_the_sinusoid_coefficients_scale_as_w_to_the_n(kind: str, w: Fraction, n
     t = Fraction(3, 7)
     terms = sum(series.sinusoid_coefficient_in_omega(kind, w, k) * t**k for k in range(n + 1))
     assert terms == series.sinusoid_series(kind, w, t, n)
+
+
+@given(rationals(-3, 3, 6), rationals(-3, 3, 6), st.integers(min_value=0, max_value=20))
+def test_the_multiplication_box_multiplies_by_x_plus_y(x: Fraction, y: Fraction, n: int) -> None:
+    """The rows of the multiplication box of (2)-(5) are x (x + y)^n and y (x + y)^n, and
+    their sum is (x + y)^(n + 1), exactly."""
+    assert series.binomial_box_row(x, y, n, "x") == x * (x + y) ** n
+    assert series.binomial_box_row(x, y, n, "y") == y * (x + y) ** n
+    assert series.binomial_box_product(x, y, n) == (x + y) ** (n + 1)
