@@ -995,6 +995,14 @@ def euler_inverse(theta: Any) -> EulerInverse:
     return EulerInverse((plus + minus) / math.cos(theta), (plus - minus) / math.sin(theta))
 
 
+def phasor_modulus(x: Any, y: Any) -> float:
+    """The modulus r = A = |psi| of the phasor with Cartesian parts psi_x = ``x``, psi_y = ``y``
+    (the polar form of (10.19b), Fig. 10.5): the radius of x + i y in polar coordinates."""
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    return cmath.polar(complex(float(x), float(y)))[0]
+
+
 def phasor_quarter_cycle() -> float:
     """Fraction s of a cycle by which Re psi runs behind Im psi for psi = A e^(-i w t)
     (the "gonna-be" of Fig. 10.5b): Re psi(t + s T) = Im psi(t), i.e. e^(-2 pi i s) = -i."""

@@ -684,3 +684,13 @@ def test_the_multiplication_box_multiplies_by_x_plus_y(x: Fraction, y: Fraction,
     assert series.binomial_box_row(x, y, n, "x") == x * (x + y) ** n
     assert series.binomial_box_row(x, y, n, "y") == y * (x + y) ** n
     assert series.binomial_box_product(x, y, n) == (x + y) ** (n + 1)
+
+
+@given(plane_points(), phase_angles(), st.floats(min_value=0, max_value=1e3))
+def test_the_polar_radius_of_a_phasor(point: tuple[float, float], phi: float, r: float) -> None:
+    """The modulus |psi| of (10.19b) is the distance of psi_x + i psi_y from 0 (Pythagoras),
+    and A e^(i phi) has modulus A (the polar form of Fig. 10.5)."""
+    x, y = point
+    assert math.isclose(series.phasor_modulus(x, y), math.hypot(x, y), rel_tol=1e-15)
+    z = r * series.unit_phasor(phi)
+    assert math.isclose(series.phasor_modulus(z.real, z.imag), r, rel_tol=1e-14, abs_tol=1e-300)
