@@ -691,6 +691,24 @@ def nth_difference_quotient(difference: Any, step: Any, order: Any) -> Any:
     return value
 
 
+def polynomial_rate(coefficients: list[Any], t: Any, derivative: Any = 1) -> Any:
+    """The ``derivative``-th time derivative of x(t) = sum_k c_k t^k at t ((10.11c)-(10.11i)):
+    ``polynomial_derivative`` applied that many times. Plain operators: symbols give an
+    expression."""
+    d = inputs.count(derivative, "derivative")
+    current = list(coefficients)
+    for _ in range(d):
+        current = polynomial_derivative(current)
+    return sum((c * t**k for k, c in enumerate(current)), 0)
+
+
+def power_term_rate(t: Any, power: Any, derivative: Any, coefficient: Any = 1) -> Any:
+    """The ``derivative``-th derivative of c t^n, the general term of (10.11c)-(10.11i):
+    ``derivative_term``'s factor times c times t to the lowered power."""
+    term = derivative_term(power, derivative)
+    return coefficient * term.factor * t**term.power
+
+
 def maclaurin_divisor(power: Any) -> int:
     """c_k = x^(k)(0) / D_k: the k-th derivative of c_k t^k at t = 0 is D_k c_k, D_k the product
     of the power-rule factors (10.11); D_2 = 2 gives c2 = a(0)/2."""

@@ -694,3 +694,25 @@ def test_the_polar_radius_of_a_phasor(point: tuple[float, float], phi: float, r:
     assert math.isclose(series.phasor_modulus(x, y), math.hypot(x, y), rel_tol=1e-15)
     z = r * series.unit_phasor(phi)
     assert math.isclose(series.phasor_modulus(z.real, z.imag), r, rel_tol=1e-14, abs_tol=1e-300)
+
+
+@given(
+    st.lists(rationals(-9, 9, 6), min_size=0, max_size=9),
+    rationals(-3, 3, 8),
+    st.integers(min_value=0, max_value=10),
+)
+def test_repeated_derivatives_of_a_power_series(
+    coefficients: list[Fraction], t: Fraction, d: int
+) -> None:
+    """d derivatives of sum c_k t^k ((10.11c)-(10.11i)) give sum c_k k!/(k-d)! t^(k-d), term by
+    term: each term's general form is the falling factorial k(k-1)...(k-d+1) c_k t^(k-d)."""
+    expected = sum(
+        (c * math.perm(k, d) * t ** (k - d) for k, c in enumerate(coefficients) if k >= d),
+        Fraction(0),
+    )
+    assert series.polynomial_rate(coefficients, t, d) == expected
+    terms = sum(
+        (series.power_term_rate(t, k, d, coefficient=c) for k, c in enumerate(coefficients)),
+        Fraction(0),
+    )
+    assert terms == expected
