@@ -723,6 +723,12 @@ def maclaurin_factorial(power: Any) -> int:
     return inverse_factorial(maclaurin_divisor(k))
 
 
+def leibniz_denominator(step: Any, order: Any) -> Any:
+    """The denominator of Leibniz's d^n x/dt^n (10.12b): what the n-th difference d^n x is
+    divided by in ``nth_difference_quotient``, one dt per derivative taken (dt^n)."""
+    return 1 / nth_difference_quotient(1, step, order)
+
+
 def maclaurin_polynomial(derivatives: list[Any], t: Any) -> Any:
     """The Maclaurin series (10.12a) cut after the given derivatives at t = 0 (x(0), v(0), a(0),
     j(0), ...): sum_k x^(k)(0) t^k / D_k, with the divisors D_k of (10.11) found by applying the

@@ -547,9 +547,9 @@ def test_the_log_potential_force_is_one_over_y(y: float) -> None:
 def test_the_nth_difference_quotient_of_t_to_the_n_is_n_factorial(
     n: int, t: Fraction, h: Fraction
 ) -> None:
-    """Leibniz's d^n x/dt^n (10.12b) divides the n-th difference by dt^n: the n-th forward
-    difference of x = t^n over steps h is n! h^n whatever t and h, so the quotient is the n-th
-    derivative n! exactly; one dt fewer leaves a factor h."""
+    """Leibniz's d^n x/dt^n (10.12b) divides the n-th difference by dt^n, its denominator: the
+    n-th forward difference of x = t^n over steps h is n! h^n whatever t and h, so the quotient
+    is the n-th derivative n! exactly; one dt fewer leaves a factor h."""
     values = [(t + j * h) ** n for j in range(n + 1)]
     for _ in range(n):  # the n-th forward difference
         values = [b - a for a, b in itertools.pairwise(values)]
@@ -557,6 +557,11 @@ def test_the_nth_difference_quotient_of_t_to_the_n_is_n_factorial(
     assert series.nth_difference_quotient(difference, h, n) == math.factorial(n)
     if n:
         assert series.nth_difference_quotient(difference, h, n - 1) == math.factorial(n) * h
+    # the denominator dt^n: the quotient times it gives the difference back
+    assert series.leibniz_denominator(h, n) == h**n
+    assert series.nth_difference_quotient(difference, h, n) * series.leibniz_denominator(h, n) == (
+        difference
+    )
 
 
 @given(rationals(-3, 3, 8), rationals(-3, 3, 8), st.integers(min_value=0, max_value=12))
