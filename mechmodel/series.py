@@ -25,7 +25,7 @@ from typing import Any
 
 import mpmath
 
-from mechmodel import inputs
+from mechmodel import fields, inputs
 
 DIGITS = 40  # mpmath working precision (significant digits) for e and compound interest
 
@@ -220,6 +220,23 @@ def exp_series_derivative_term(power: Any) -> ExpDerivativeTerm:
     )
 
 
+def exp_series_polynomial(rate: Any, time: Any, order: Any) -> Any:
+    """The e-series (10.5a) of e^(r t) cut after its (r t)^``order`` term: sum_k c_k (r t)^k,
+    the coefficients c_k those of the binomial limit (``exp_series_coefficient``: counted with
+    Pascal's rule, not with factorials). Plain operators: symbols give an expression."""
+    order = inputs.count(order, "order")
+    x = rate * time
+    return sum((exp_series_coefficient(k) * x**k for k in range(order + 1)), 0)
+
+
+def exp_series_polynomial_rate(rate: Any, time: Any, order: Any) -> Any:
+    """The time rate d/dt of ``exp_series_polynomial`` (10.9): the power rule (10.8b) applied
+    term by term to that polynomial in t, whose coefficients are c_k r^k."""
+    order = inputs.count(order, "order")
+    coefficients = [exp_series_coefficient(k) * rate**k for k in range(order + 1)]
+    return sum((c * time**k for k, c in enumerate(polynomial_derivative(coefficients))), 0)
+
+
 def exp_to_log_rotation() -> float:
     """The quarter turn that carries the graph of y = e^x onto the log potential U = -ln y
     (Fig. 10.1: "rotate your y = e^x graph by 90 degrees"). Each candidate rotation by j * 90
@@ -245,6 +262,13 @@ def _log_potential_slope(y: Any) -> mpmath.mpf:
         h = mpmath.mpf(10) ** (-(DIGITS // 3))
         yy = _mp(Fraction(y))
         return (-mpmath.log(yy + h) + mpmath.log(yy - h)) / (2 * h)
+
+
+def log_potential_force(y: Any) -> float:
+    """The force F(y) = -dU/dy of the log potential U(y) = -ln y (Fig. 10.1b, c), from the
+    slope of U by a difference quotient at high precision (it is 1/y)."""
+    inputs.positive(y, "y")
+    return float(-_log_potential_slope(y))
 
 
 def log_potential_force_moment(y: Any) -> float:
@@ -408,11 +432,62 @@ def binomial_expansion(power: Any) -> list[int]:
     return coefficients
 
 
+def binomial_terms(x: Any, y: Any, n: Any, first: Any, last: Any, end: str = "x") -> Any:
+    """The sum of the terms B(n, k) x^(n-k) y^k of (x + y)^n for k = ``first`` .. ``last`` (the
+    binomial series after (10.4)), the coefficients from ``binomial_expansion``; ``end = "y"``
+    counts the terms from the y^n end instead: k = n - ``last`` .. n - ``first``."""
+    n = inputs.count(n, "n")
+    first, last = inputs.count(first, "first"), inputs.count(last, "last")
+    if end not in ("x", "y"):
+        raise ValueError(f"end must be 'x' or 'y', got {end!r}")
+    row = binomial_expansion(n)
+    ks = range(n - last, n - first + 1) if end == "y" else range(first, last + 1)
+    return sum((row[k] * x ** (n - k) * y**k for k in ks if 0 <= k <= n), 0)
+
+
+def compound_binomial_terms(rate: Any, time: Any, n: Any, last: Any) -> Any:
+    """The binomial series of (1 + r t/n)^n (the step from (10.4) to (10.5a)) through its
+    (r t/n)^``last`` term: ``binomial_terms`` with x = 1, y = r t/n."""
+    return binomial_terms(1, rate * time / n, n, 0, last)
+
+
+def falling_factorial_leading_term(n: Any, factors: Any) -> Any:
+    """The leading term of n(n-1)...(n-k+1), k = ``factors``, as a polynomial in n: the power of
+    n that cancels the n^k of (r t/n)^k for huge n (after (10.4)). The product is multiplied
+    out factor by factor (coefficient lists, constant term first) and its top term kept."""
+    k = inputs.count(factors, "factors")
+    coefficients = [1]
+    for j in range(k):  # times (n - j)
+        shifted = [0, *coefficients]
+        scaled = [-j * c for c in coefficients] + [0]
+        coefficients = [a + b for a, b in zip(shifted, scaled, strict=True)]
+    degree = max(d for d, c in enumerate(coefficients) if c)
+    return coefficients[degree] * n**degree
+
+
 def binomial_box_power(top_power: Any) -> int:
     """Power of the product computed in a multiplication box: the top row (x + y)^n times the
     factor (x + y) on the left is (x + y)^(n + 1); read off the expansion's length."""
     n = inputs.count(top_power, "top_power")
     return len(binomial_expansion(n)) if n >= 0 else 0
+
+
+def binomial_box_row(x: Any, y: Any, top_power: Any, left: str) -> Any:
+    """A row of the multiplication box of (2)-(5): the factor ``left`` (x or y) on the left
+    times each term of the top row (x + y)^n (coefficients of ``binomial_expansion``), added
+    up. Plain operators: symbols give an expression."""
+    if left not in ("x", "y"):
+        raise ValueError(f"left must be 'x' or 'y', got {left!r}")
+    n = inputs.count(top_power, "top_power")
+    factor = x if left == "x" else y
+    row = binomial_expansion(n)
+    return sum((factor * row[k] * x ** (n - k) * y**k for k in range(n + 1)), 0)
+
+
+def binomial_box_product(x: Any, y: Any, top_power: Any) -> Any:
+    """The product worked out in a multiplication box, (x + y)^n (x + y) of (2)-(5): the x row
+    plus the y row (``binomial_box_row``)."""
+    return binomial_box_row(x, y, top_power, "x") + binomial_box_row(x, y, top_power, "y")
 
 
 def binomial_box_expansion(top_power: Any) -> list[int]:
@@ -578,6 +653,62 @@ def derivative_term(power: Any, derivative: Any) -> DerivativeTerm:
     return DerivativeTerm(factors, factor, p if factor else 0)
 
 
+def power_increment(t: Any, dt: Any, power: Any) -> Any:
+    """The rise x(t + dt) - x(t) of the power curve x = t^n over a step dt ((10.7a), (10.8a)):
+    (t + dt)^n expanded with the coefficients of ``binomial_expansion`` (the multiplication
+    box), less t^n. Plain operators: symbols give an expression."""
+    n = inputs.count(power, "power")
+    row = binomial_expansion(n)
+    return sum((row[j] * t ** (n - j) * dt**j for j in range(n + 1)), 0) - t**n
+
+
+def secant_slope(t: Any, dt: Any, power: Any) -> Any:
+    """The slope ratio dx/dt of the secant of x = t^n from t to t + dt ((10.7a), (10.8a))."""
+    return power_increment(t, dt, power) / dt
+
+
+def power_derivative(t: Any, power: Any, coefficient: Any = 1) -> Any:
+    """The tangent slope d/dt (A t^n) of (10.7b), (10.8b): A times the ``power_rule``'s factor
+    times t to its lowered power (the secant slope's limit as dt shrinks)."""
+    rule = power_rule(power)
+    return coefficient * rule.factor * t**rule.power
+
+
+def parabola_slope(lam: Any, x: Any) -> Any:
+    """Slope dy/dx at ``x`` of the parabola 2 lam y = x^2 of semi-latus rectum ``lam`` (Fig. 9.4,
+    checked after (10.7b)): its height ``fields.parabola_height_for_latus`` is a multiple of
+    x^2, differentiated by the power rule (``power_derivative``)."""
+    return power_derivative(x, 2, coefficient=fields.parabola_height_for_latus(lam, 1))
+
+
+def nth_difference_quotient(difference: Any, step: Any, order: Any) -> Any:
+    """Leibniz's d^n x/dt^n of (10.12b): the n-th difference d^n x of x, divided by the step dt
+    once for each of the n difference quotients taken (the d/dt of d/dt of ...): over dt^n."""
+    n = inputs.count(order, "order")
+    value = difference
+    for _ in range(n):
+        value = value / step
+    return value
+
+
+def polynomial_rate(coefficients: list[Any], t: Any, derivative: Any = 1) -> Any:
+    """The ``derivative``-th time derivative of x(t) = sum_k c_k t^k at t ((10.11c)-(10.11i)):
+    ``polynomial_derivative`` applied that many times. Plain operators: symbols give an
+    expression."""
+    d = inputs.count(derivative, "derivative")
+    current = list(coefficients)
+    for _ in range(d):
+        current = polynomial_derivative(current)
+    return sum((c * t**k for k, c in enumerate(current)), 0)
+
+
+def power_term_rate(t: Any, power: Any, derivative: Any, coefficient: Any = 1) -> Any:
+    """The ``derivative``-th derivative of c t^n, the general term of (10.11c)-(10.11i):
+    ``derivative_term``'s factor times c times t to the lowered power."""
+    term = derivative_term(power, derivative)
+    return coefficient * term.factor * t**term.power
+
+
 def maclaurin_divisor(power: Any) -> int:
     """c_k = x^(k)(0) / D_k: the k-th derivative of c_k t^k at t = 0 is D_k c_k, D_k the product
     of the power-rule factors (10.11); D_2 = 2 gives c2 = a(0)/2."""
@@ -590,6 +721,19 @@ def maclaurin_factorial(power: Any) -> int:
     divisor D_k (it is k)."""
     k = inputs.count(power, "power")
     return inverse_factorial(maclaurin_divisor(k))
+
+
+def leibniz_denominator(step: Any, order: Any) -> Any:
+    """The denominator of Leibniz's d^n x/dt^n (10.12b): what the n-th difference d^n x is
+    divided by in ``nth_difference_quotient``, one dt per derivative taken (dt^n)."""
+    return 1 / nth_difference_quotient(1, step, order)
+
+
+def maclaurin_polynomial(derivatives: list[Any], t: Any) -> Any:
+    """The Maclaurin series (10.12a) cut after the given derivatives at t = 0 (x(0), v(0), a(0),
+    j(0), ...): sum_k x^(k)(0) t^k / D_k, with the divisors D_k of (10.11) found by applying the
+    power rule k times (``maclaurin_divisor``). Plain operators: symbols give an expression."""
+    return sum((Fraction(1, maclaurin_divisor(k)) * d * t**k for k, d in enumerate(derivatives)), 0)
 
 
 @dataclass(frozen=True)
@@ -734,6 +878,28 @@ def sinusoid_partial_sum(kind: str, x: Any, order: Any) -> Any:
     return _sum_terms(_sinusoid_terms(kind, order), x)
 
 
+def sinusoid_coefficient_in_omega(kind: str, omega: Any, power: Any) -> Any:
+    """Maclaurin coefficient c_n = x^(n)(0)/n! of sin(w t) or cos(w t) as a function of w (the
+    list after (10.15)): the n-th derivative of (10.15) at t = 0, sign w^n (cos 0) or 0 (sin 0),
+    over the divisor D_n of (10.11). Plain operators: a symbol w gives an expression."""
+    n = inputs.count(power, "power")
+    d = sinusoid_derivative(kind, n)
+    return Fraction(d.value_at_zero, maclaurin_divisor(n)) * omega**d.omega_power
+
+
+def sinusoid_series(kind: str, omega: Any, t: Any, order: Any) -> Any:
+    """The sine or cosine series (10.16) of sin(w t) or cos(w t) up to the power ``order``, its
+    zero terms included: sum_n x^(n)(0) t^n / D_n with the derivatives x^(n)(0) = sign w^n
+    (cos 0) or 0 (sin 0) of (10.15) (``sinusoid_derivative``) and the Maclaurin divisors D_n
+    (10.11). Plain operators: symbols give an expression."""
+    order = inputs.count(order, "order")
+    total: Any = 0
+    for n in range(order + 1):
+        d = sinusoid_derivative(kind, n)
+        total += Fraction(d.value_at_zero, maclaurin_divisor(n)) * omega**d.omega_power * t**n
+    return total
+
+
 def sinusoid_remainder_bound(x: Any, order: Any) -> Any:
     """Lagrange bound |x|^(o+1)/(o+1)! on |sin x - partial sum| and |cos x - partial sum|
     (every derivative of sin and cos is at most 1 in size)."""
@@ -853,6 +1019,14 @@ def euler_inverse(theta: Any) -> EulerInverse:
     return EulerInverse((plus + minus) / math.cos(theta), (plus - minus) / math.sin(theta))
 
 
+def phasor_modulus(x: Any, y: Any) -> float:
+    """The modulus r = A = |psi| of the phasor with Cartesian parts psi_x = ``x``, psi_y = ``y``
+    (the polar form of (10.19b), Fig. 10.5): the radius of x + i y in polar coordinates."""
+    inputs.real(x, "x")
+    inputs.real(y, "y")
+    return cmath.polar(complex(float(x), float(y)))[0]
+
+
 def phasor_quarter_cycle() -> float:
     """Fraction s of a cycle by which Re psi runs behind Im psi for psi = A e^(-i w t)
     (the "gonna-be" of Fig. 10.5b): Re psi(t + s T) = Im psi(t), i.e. e^(-2 pi i s) = -i."""
@@ -876,6 +1050,15 @@ def phasor_derivative(order: Any) -> PhasorDerivative:
         factor = factor * complex(0, -1)
         power += 1
     return PhasorDerivative(factor, power)
+
+
+def phasor_rate(omega: Any, x: Any, order: Any) -> Any:
+    """The ``order``-th time derivative of x(t) = x(0) e^(-i w t) as a multiple of x(t)
+    ((10.22b), (10.23a)): the ``phasor_derivative`` factor times w^power times x."""
+    d = phasor_derivative(order)
+    f = d.factor  # a power of -i: real (+-1, kept an exact int) for an even order
+    factor = int(f.real) if f.imag == 0 and f.real.is_integer() else f
+    return factor * omega**d.omega_power * x
 
 
 def unit_circle_radius(samples: Any = 12) -> float:

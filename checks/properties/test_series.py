@@ -8,6 +8,7 @@ working precision.
 from __future__ import annotations
 
 import cmath
+import itertools
 import math
 from fractions import Fraction
 
@@ -25,7 +26,7 @@ from checks.properties.strategies import (
     series_arguments,
     series_orders,
 )
-from mechmodel import series
+from mechmodel import fields, series
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
@@ -527,3 +528,196 @@ def test_the_sinusoid_minimum_order_is_the_first_within_the_tolerance(
     at_end = abs(series.sinusoid_partial_sum(kind, two, order) - f(two))
     error = series.sinusoid_max_error(kind, order, 2)
     assert at_end <= error <= series.sinusoid_remainder_bound(two, order) * (1 + REL)
+
+
+# -- the formulas of the text, as functions (formula claims, design 2a) --------------------------
+
+
+@given(st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k))
+def test_the_log_potential_force_is_one_over_y(y: float) -> None:
+    """F(y) = -dU/dy of U = -ln y is 1/y (Fig. 10.1c): the force times y is the moment 1, and
+    the force halves where y doubles."""
+    force = series.log_potential_force(y)
+    assert math.isclose(force, 1 / y, rel_tol=1e-15)
+    assert math.isclose(force * y, series.log_potential_force_moment(y), rel_tol=1e-15)
+    assert math.isclose(series.log_potential_force(2 * y), force / 2, rel_tol=1e-14)
+
+
+@given(st.integers(min_value=0, max_value=8), rationals(-5, 5, 6), rationals(1, 3, 6))
+def test_the_nth_difference_quotient_of_t_to_the_n_is_n_factorial(
+    n: int, t: Fraction, h: Fraction
+) -> None:
+    """Leibniz's d^n x/dt^n (10.12b) divides the n-th difference by dt^n, its denominator: the
+    n-th forward difference of x = t^n over steps h is n! h^n whatever t and h, so the quotient
+    is the n-th derivative n! exactly; one dt fewer leaves a factor h."""
+    values = [(t + j * h) ** n for j in range(n + 1)]
+    for _ in range(n):  # the n-th forward difference
+        values = [b - a for a, b in itertools.pairwise(values)]
+    (difference,) = values
+    assert series.nth_difference_quotient(difference, h, n) == math.factorial(n)
+    if n:
+        assert series.nth_difference_quotient(difference, h, n - 1) == math.factorial(n) * h
+    # the denominator dt^n: the quotient times it gives the difference back
+    assert series.leibniz_denominator(h, n) == h**n
+    assert series.nth_difference_quotient(difference, h, n) * series.leibniz_denominator(h, n) == (
+        difference
+    )
+
+
+@given(rationals(-3, 3, 8), rationals(-3, 3, 8), st.integers(min_value=0, max_value=12))
+def test_the_e_series_polynomial_and_its_rate(r: Fraction, t: Fraction, order: int) -> None:
+    """The e-series of e^(r t) cut at (r t)^o is the partial sum of (10.6) at x = r t, and its
+    time rate is r times the series cut one order lower: d/dt e^(r t) = r e^(r t) (10.9)."""
+    polynomial = series.exp_series_polynomial(r, t, order)
+    assert polynomial == series.exp_partial_sum(r * t, order, exact=True)
+    rate = series.exp_series_polynomial_rate(r, t, order)
+    assert rate == (r * series.exp_series_polynomial(r, t, order - 1) if order else 0)
+
+
+@given(rationals(-5, 5, 8), rationals(-2, 2, 8), st.integers(min_value=0, max_value=10))
+def test_the_secant_slope_tends_to_the_power_rule(t: Fraction, h: Fraction, n: int) -> None:
+    """x(t + dt) - x(t) for x = t^n is the binomial expansion less t^n ((10.7a), (10.8a)); the
+    secant slope exceeds the tangent slope n t^(n-1) (10.8b) by the higher terms
+    B(n, j) t^(n-j) dt^(j-1), j >= 2, which vanish with dt."""
+    assert series.power_increment(t, h, n) == (t + h) ** n - t**n
+    assert series.power_derivative(t, n) == (n * t ** (n - 1) if n else 0)
+    assert series.power_derivative(t, n, coefficient=h) == h * series.power_derivative(t, n)
+    if h:
+        higher = sum(
+            (math.comb(n, j) * t ** (n - j) * h ** (j - 1) for j in range(2, n + 1)), Fraction(0)
+        )
+        assert series.secant_slope(t, h, n) - series.power_derivative(t, n) == higher
+
+
+@given(st.lists(rationals(-9, 9, 6), min_size=0, max_size=9), rationals(-3, 3, 8))
+def test_the_maclaurin_series_of_a_polynomial_is_the_polynomial(
+    coefficients: list[Fraction], t: Fraction
+) -> None:
+    """A polynomial sum c_k t^k has the derivatives k! c_k at t = 0 ((10.11)); the Maclaurin
+    series (10.12a) built from them gives the polynomial back, exactly."""
+    derivatives = [math.factorial(k) * c for k, c in enumerate(coefficients)]
+    expected = sum((c * t**k for k, c in enumerate(coefficients)), Fraction(0))
+    assert series.maclaurin_polynomial(derivatives, t) == expected
+
+
+@given(
+    st.sampled_from(["sin", "cos"]),
+    rationals(-3, 3, 8),
+    rationals(-3, 3, 8),
+    st.integers(min_value=0, max_value=14),
+)
+def test_the_sinusoid_series_in_w_and_t(kind: str, w: Fraction, t: Fraction, order: int) -> None:
+    """The series (10.16) of sin(w t), cos(w t) is the partial sum at x = w t, exactly; it is
+    odd in t for the sine, even for the cosine."""
+    value = series.sinusoid_series(kind, w, t, order)
+    assert value == series.sinusoid_partial_sum(kind, w * t, order)
+    assert series.sinusoid_series(kind, w, -t, order) == (-value if kind == "sin" else value)
+
+
+@given(st.floats(min_value=0.01, max_value=10), plane_points(), st.integers(0, 12))
+def test_each_phasor_derivative_multiplies_by_minus_i_w(
+    w: float, point: tuple[float, float], n: int
+) -> None:
+    """x(t) = x(0) e^(-i w t) has d^n x/dt^n = (-i w)^n x(t) ((10.22)); the second derivative
+    is -w^2 x, the Newton-Hooke equation (10.23a)."""
+    x = complex(*point)
+    expected = (-1j * w) ** n * x
+    assert cmath.isclose(series.phasor_rate(w, x, n), expected, rel_tol=1e-12, abs_tol=1e-300)
+    assert series.phasor_rate(w, x, 2) == -(w**2) * x
+
+
+@given(rationals(Fraction(1, 8), 8, 8), rationals(-5, 5, 8), rationals(Fraction(1, 64), 1, 8))
+def test_the_parabola_slope_is_x_over_lambda(lam: Fraction, x: Fraction, h: Fraction) -> None:
+    """The parabola 2 lambda y = x^2 of Fig. 9.4 has the slope dy/dx = x/lambda (after
+    (10.7b)): for a quadratic the centred difference quotient is the slope exactly, for any
+    step h."""
+    height = fields.parabola_height_for_latus
+    slope = series.parabola_slope(lam, x)
+    assert slope == (height(lam, x + h) - height(lam, x - h)) / (2 * h)
+    assert slope == x / lam
+
+
+@given(
+    rationals(-3, 3, 6),
+    rationals(-3, 3, 6),
+    binomial_powers().filter(lambda n: n <= 25),
+    st.data(),
+)
+def test_binomial_terms_sum_to_the_power(
+    x: Fraction, y: Fraction, n: int, data: st.DataObject
+) -> None:
+    """All the terms of the binomial series (after (10.4)) add up to (x + y)^n; counted from the
+    y^n end they are the terms of (y + x)^n counted from its first; the series of (1 + r t/n)^n
+    is the one at x = 1, y = r t/n."""
+    assert series.binomial_terms(x, y, n, 0, n) == (x + y) ** n
+    a = data.draw(st.integers(0, n))
+    b = data.draw(st.integers(a, n))
+    assert series.binomial_terms(x, y, n, a, b, end="y") == series.binomial_terms(y, x, n, a, b)
+    if a < n:  # the first a + 1 terms and the last n - a terms
+        head = series.binomial_terms(x, y, n, 0, a)
+        assert head + series.binomial_terms(x, y, n, 0, n - a - 1, "y") == (x + y) ** n
+    if n:
+        assert series.compound_binomial_terms(x, y, n, n) == (1 + x * y / n) ** n
+
+
+@given(st.integers(min_value=0, max_value=12), st.integers(min_value=1, max_value=10**6))
+def test_the_falling_factorial_grows_like_its_leading_power(k: int, n: int) -> None:
+    """n(n-1)...(n-k+1) has the leading term n^k ("huge n makes n(n-1) cancel n^2", after
+    (10.4)): for n >= k the ratio of the product to n^k lies between 1 - k(k-1)/(2n) and 1."""
+    assert series.falling_factorial_leading_term(n, k) == n**k
+    product = math.prod(n - j for j in range(k))
+    if n >= k:
+        ratio = Fraction(product, series.falling_factorial_leading_term(n, k))
+        assert 1 - Fraction(k * (k - 1), 2 * n) <= ratio <= 1
+
+
+@given(st.sampled_from(["sin", "cos"]), rationals(-3, 3, 8), st.integers(min_value=0, max_value=14))
+def test_the_sinusoid_coefficients_scale_as_w_to_the_n(kind: str, w: Fraction, n: int) -> None:
+    """c_n of sin(w t) or cos(w t) is w^n times the c_n of sin t or cos t (each derivative
+    (10.15) brings one w), and the c_n t^n add up to the series (10.16)."""
+    coefficient = series.sinusoid_coefficient_in_omega(kind, w, n)
+    assert coefficient == series.sinusoid_coefficient(kind, n) * w**n
+    t = Fraction(3, 7)
+    terms = sum(series.sinusoid_coefficient_in_omega(kind, w, k) * t**k for k in range(n + 1))
+    assert terms == series.sinusoid_series(kind, w, t, n)
+
+
+@given(rationals(-3, 3, 6), rationals(-3, 3, 6), st.integers(min_value=0, max_value=20))
+def test_the_multiplication_box_multiplies_by_x_plus_y(x: Fraction, y: Fraction, n: int) -> None:
+    """The rows of the multiplication box of (2)-(5) are x (x + y)^n and y (x + y)^n, and
+    their sum is (x + y)^(n + 1), exactly."""
+    assert series.binomial_box_row(x, y, n, "x") == x * (x + y) ** n
+    assert series.binomial_box_row(x, y, n, "y") == y * (x + y) ** n
+    assert series.binomial_box_product(x, y, n) == (x + y) ** (n + 1)
+
+
+@given(plane_points(), phase_angles(), st.floats(min_value=0, max_value=1e3))
+def test_the_polar_radius_of_a_phasor(point: tuple[float, float], phi: float, r: float) -> None:
+    """The modulus |psi| of (10.19b) is the distance of psi_x + i psi_y from 0 (Pythagoras),
+    and A e^(i phi) has modulus A (the polar form of Fig. 10.5)."""
+    x, y = point
+    assert math.isclose(series.phasor_modulus(x, y), math.hypot(x, y), rel_tol=1e-15)
+    z = r * series.unit_phasor(phi)
+    assert math.isclose(series.phasor_modulus(z.real, z.imag), r, rel_tol=1e-14, abs_tol=1e-300)
+
+
+@given(
+    st.lists(rationals(-9, 9, 6), min_size=0, max_size=9),
+    rationals(-3, 3, 8),
+    st.integers(min_value=0, max_value=10),
+)
+def test_repeated_derivatives_of_a_power_series(
+    coefficients: list[Fraction], t: Fraction, d: int
+) -> None:
+    """d derivatives of sum c_k t^k ((10.11c)-(10.11i)) give sum c_k k!/(k-d)! t^(k-d), term by
+    term: each term's general form is the falling factorial k(k-1)...(k-d+1) c_k t^(k-d)."""
+    expected = sum(
+        (c * math.perm(k, d) * t ** (k - d) for k, c in enumerate(coefficients) if k >= d),
+        Fraction(0),
+    )
+    assert series.polynomial_rate(coefficients, t, d) == expected
+    terms = sum(
+        (series.power_term_rate(t, k, d, coefficient=c) for k, c in enumerate(coefficients)),
+        Fraction(0),
+    )
+    assert terms == expected
