@@ -93,6 +93,24 @@ def test_generic_points_respect_domains_signs_and_are_fixed() -> None:
     assert len({pt[t] for pt in points}) == len(points)  # no two alike
 
 
+def test_an_integer_symbol_stays_inside_its_domain() -> None:
+    n = make_symbol("n", {"positive": True, "integer": True})
+    points = generic_points({"n": n}, {"n": [5, 9]})
+    assert all(5 <= pt[n] <= 9 and float(pt[n]).is_integer() for pt in points)
+    assert len({pt[n] for pt in points}) > 1
+
+
+def test_an_exact_zero_agrees_with_a_zero_model_but_not_with_a_small_one() -> None:
+    n = make_symbol("n", {"positive": True, "integer": True})
+    points = generic_points({"n": n}, {"n": [4, 4]})
+    falling = n * (n - 1) * (n - 2) * (n - 3) * (n - 4)  # zero at n = 4
+    assert compare(
+        parse_formula("0", {"n": n}), lambda pt: complex(falling.subs(pt)), points
+    ).agrees
+    assert compare(parse_formula("0", {"n": n}), lambda pt: 1e-25, points).agrees  # noise
+    assert not compare(parse_formula("0", {"n": n}), lambda pt: 1e-6, points).agrees
+
+
 @pytest.mark.parametrize(
     ("text", "shown"),
     [

@@ -61,6 +61,7 @@ ASSUMPTIONS = frozenset(
 _GENERIC = (0.3817, 1.2913, 0.7331, 1.8629, 0.5471, 2.4163, 0.9187)
 POINTS = 5
 REL_TOL = 1e-9
+ABS_TOL = 1e-20  # an exact zero against 30-digit evaluation noise
 
 
 class FormulaError(ValueError):
@@ -179,7 +180,7 @@ def generic_points(
 ) -> list[dict[sympy.Symbol, float]]:
     """A fixed list of ``POINTS`` generic points: each symbol at its own rotation of generic
     values, scaled into its domain (default (0, 3] for positive symbols, else about [-2.4, 2.4]
-    with both signs), integers rounded to generic integers."""
+    with both signs), integers rounded to generic integers (inside a declared domain)."""
     out = []
     names = sorted(symbols)
     for k in range(POINTS):
@@ -194,7 +195,9 @@ def generic_points(
                 value = g
             else:
                 value = g if (k + j) % 2 == 0 else -g
-            if sym.is_integer:
+            if sym.is_integer and lo is not None and hi is not None:
+                value = min(max(round(value), math.ceil(lo)), math.floor(hi))
+            elif sym.is_integer:
                 value = round(value * 3) + 3 if sym.is_positive else round(value * 3)
             point[sym] = value
         out.append(point)
@@ -224,7 +227,8 @@ def compare(
 ) -> Comparison:
     """Whether the book's formula equals the model's: symbolically where both are expressions
     and the book has no decimal literal, else at ``points``, within what the literals'
-    half-widths can change (first order) and a relative ``REL_TOL``."""
+    half-widths can change (first order), a relative ``REL_TOL`` and an absolute ``ABS_TOL``
+    (far below any printed difference, far above the noise of 30-digit evaluation)."""
     if isinstance(model, sympy.Expr) and not book.literals:
         difference = sympy.simplify(book.expr - model)
         if difference == 0:
@@ -233,7 +237,7 @@ def compare(
     for point in points:
         b = _numeric(book.nominal, point)
         m = _numeric(model, point) if isinstance(model, sympy.Expr) else complex(model(point))
-        slack = REL_TOL * (abs(b) + abs(m) + 1e-300)
+        slack = REL_TOL * (abs(b) + abs(m)) + ABS_TOL
         for lit in book.literals:
             partial = sympy.diff(book.expr, lit.symbol).subs(
                 {x.symbol: sympy.Rational(x.value) for x in book.literals}
