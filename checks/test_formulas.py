@@ -119,6 +119,8 @@ def test_an_exact_zero_agrees_with_a_zero_model_but_not_with_a_small_one() -> No
         ("sqrt(2*g*h)", "√(2·g·h)"),
         ("x**2/(2*lamda)", "x²/(2·λ)"),
         ("m*omega0**-2", "m·ω0⁻²"),
+        ("t**3/factorial(3) + I*theta", "t³/3!+i·θ"),
+        ("log(z) + E**x + En*I0", "ln(z)+e^x+En·I0"),
     ],
 )
 def test_formulas_are_shown_as_the_book_prints_them(text: str, shown: str) -> None:

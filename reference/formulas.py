@@ -286,7 +286,8 @@ def _unicode_names() -> dict[str, str]:
 
 def unicode_formula(text: str) -> str:
     """A formula in sympy syntax as the book would print it: Greek letters, superscript
-    powers, a middle dot for a product, √ for a square root ("omega**2*r" -> "ω²·r")."""
+    powers, a middle dot for a product, √ for a square root, k! for factorial(k), i and e for
+    sympy's I and E, ln for log ("omega**2*r" -> "ω²·r")."""
     supers = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
     out = text.replace(" ", "")
     for name, letter in sorted(_unicode_names().items(), key=lambda kv: -len(kv[0])):
@@ -297,6 +298,10 @@ def unicode_formula(text: str) -> str:
         return match.group(1).translate(supers)
 
     out = re.sub(r"\*\*(-?\d+)", power, out)
+    out = re.sub(r"factorial\((\w+)\)", r"\1!", out)
+    out = re.sub(r"(?<![\w.])I(?!\w)", "i", out)  # sympy's imaginary unit
+    out = re.sub(r"(?<![\w.])E(?!\w)", "e", out)  # and Euler's number
+    out = re.sub(r"(?<!\w)log\(", "ln(", out)
     out = out.replace("**", "^").replace("*", "·")
     return out
 

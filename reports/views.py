@@ -102,6 +102,7 @@ def claim_row(claim: EvaluatedClaim) -> dict[str, Any]:
         "quantity": claim.quantity,
         "printed": printed_shown(claim),
         "model": unicode_formula(value) if claim.kind == "formula" and value else value or "",
+        "formula": claim.kind == "formula",
         "interval": interval_shown(claim),
         "tolerance": tolerance_shown(claim),
         "verdict": claim.verdict,
