@@ -271,7 +271,7 @@ def mass_ratio_for_retention(r_min: Any) -> float:
     if not 0 < r_min < 1:
         raise ValueError(f"a retention ratio lies between 0 and 1, got {r_min!r}")
     lo, hi = 0.0, 1.0
-    for _ in range(200):
+    while True:  # halving [lo, hi] until no float lies between them
         mid = (lo + hi) / 2
         if mid in (lo, hi):
             break
