@@ -561,6 +561,12 @@ def centre_speed_squared(g: Any, radius: Any) -> Any:
     return 2 * drop
 
 
+def interior_parabola(surface: Any) -> ParabolaGeometry:
+    """The focus-directrix geometry of the interior potential's parabola (Fig. 9.7): its x^2
+    coefficient from ``interior_potential`` (GM = 1 units) in ``parabola_geometry``."""
+    return parabola_geometry(interior_potential(surface).quadratic)
+
+
 @dataclass(frozen=True)
 class EscapeLadder:
     """The starlet's energy (per unit mass, GM = 1 units) on its way out of the planet: at rest
