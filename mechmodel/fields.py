@@ -392,6 +392,22 @@ def uniform_surface_gravity(big_g: Any, density: Any, radius: Any) -> Any:
     return inside_gravity_force(big_g, density, 1, radius)
 
 
+def gravitational_constant_unit(newton: Any, metre: Any, kilogram: Any) -> Any:
+    """The unit of Newton's constant G: Newton's law F = G M m / r^2 (9.3) solved for G,
+    G = F r^2 / (M m), with each quantity replaced by its unit (N m^2/kg^2). Plain operators:
+    give sympy symbols for a symbolic unit, or numbers for a change of units."""
+    force, distance, mass = newton, metre, kilogram
+    return force * distance * distance / (mass * mass)
+
+
+def coulomb_constant_unit(joule: Any, metre: Any, coulomb: Any) -> Any:
+    """The unit of Coulomb's constant 1/(4 pi eps0): the potential energy U = k q Q / r (9.2a)
+    solved for k, k = U r / (q Q), with each quantity replaced by its unit (J m/C^2). Plain
+    operators (symbolic with sympy symbols)."""
+    energy, distance, charge = joule, metre, coulomb
+    return energy * distance / (charge * charge)
+
+
 # --- nuclear matter and the neutron starlet -------------------------------------------------
 
 

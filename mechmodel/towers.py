@@ -438,14 +438,29 @@ def pellet_rocket(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any) -> Pell
     )
 
 
+def retained_ellipse_radius(mass: Any, radius_in: Any, retention: Any) -> float:
+    """Radius, along the velocity axis of ``mass``, of the energy ellipse that keeps the share
+    ``retention`` = KE_FIN / KE_IN of the energy of the ellipse of radius ``radius_in`` (Fig.
+    8.3b): the ellipse (3.7) reaches V = radius on that axis, where KE = mass radius^2 / 2."""
+    inputs.mass(mass, "mass")
+    inputs.positive(radius_in, "radius_in")
+    inputs.real(retention, "retention")
+    if not 0 <= retention <= 1:
+        raise ValueError(f"a retention ratio lies between 0 and 1, got {retention!r}")
+    energy_in = mass * radius_in * radius_in / 2
+    return math.sqrt(2 * retention * energy_in / mass)
+
+
 @dataclass(frozen=True)
 class RocketBlast:
     """One blast b of the pellet rocket (8.7): the rocket's mass after it (the (10 - b) m of
-    (8.7b)), its velocity boost dV_M(b) and its velocity V(b) after it."""
+    (8.7b)), its velocity boost dV_M(b), its velocity V(b) after it and ``terms``, how many of
+    the boosts (terms of the harmonic series for unit pellets) add up to V(b)."""
 
     rocket_mass: Any
     boost: Any
     velocity: Any
+    terms: int
 
 
 def rocket_blast(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any, blast: Any) -> RocketBlast:
@@ -454,7 +469,9 @@ def rocket_blast(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any, blast: A
     rocket = pellet_rocket(n_balls, pellet_mass, exhaust_velocity)
     if b >= rocket.blasts:
         raise ValueError(f"the rocket has blasts 0 to {rocket.last_blast}, not {b}")
-    return RocketBlast(rocket.rocket_masses[b], rocket.boosts[b], rocket.velocities[b])
+    sums = list(itertools.accumulate(rocket.boosts))  # the partial sums, as the rocket adds them
+    terms = sums.index(rocket.velocities[b]) + 1
+    return RocketBlast(rocket.rocket_masses[b], rocket.boosts[b], rocket.velocities[b], terms)
 
 
 def blasts_leaving(n_balls: Any, remaining: Any) -> int:

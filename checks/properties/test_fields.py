@@ -714,3 +714,19 @@ def test_total_energy_is_the_sum_of_the_dimensions(
     expected = omega * omega * (amp_x * amp_x + amp_y * amp_y) / 2  # at the turning points
     assert close(total, state.energy_x + state.energy_y, expected)
     assert close(total, expected, expected, TRIG)
+
+
+@given(fraction_quantities(), fraction_quantities(), fraction_quantities(), fraction_quantities())
+def test_constant_units_keep_the_laws_in_any_units(
+    newton: Fraction, metre: Fraction, kilogram: Fraction, coulomb: Fraction
+) -> None:
+    """Measured in other units (a newton, metre, kilogram, coulomb worth the given numbers, a
+    joule a newton metre), G and Coulomb's constant take the factors of their units, and
+    Newton's law (9.3) and the potential (9.2a) hold unchanged, exactly: N = [G] kg^2/m^2 and
+    J = [k] C^2/m."""
+    g_unit = fields.gravitational_constant_unit(newton, metre, kilogram)
+    assert g_unit * kilogram * kilogram / (metre * metre) == newton
+    joule = newton * metre
+    k_unit = fields.coulomb_constant_unit(joule, metre, coulomb)
+    assert k_unit * coulomb * coulomb / metre == joule
+    assert fields.gravitational_constant_unit(1, 1, 1) == fields.coulomb_constant_unit(1, 1, 1) == 1

@@ -246,6 +246,23 @@ def test_lowest_retention_is_the_square_of_the_common_velocity(m1: Fraction, m2:
     assert towers.retention_from_radii(m2, Fraction(3), 3 * scale) == scale * scale
 
 
+@given(
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=1e-4, max_value=1),
+)
+def test_retained_radius_shrinks_as_the_root_of_the_retention(
+    mass: float, radius: float, retention: float
+) -> None:
+    """The ellipse keeping the share R of the energy has sqrt(R) times the radius along each
+    axis (Fig. 8.3b), whatever the axis's mass: its radius gives R back."""
+    kept = towers.retained_ellipse_radius(mass, radius, retention)
+    assert math.isclose(kept, radius * math.sqrt(retention), rel_tol=1e-12)
+    assert math.isclose(towers.retention_from_radii(mass, radius, kept), retention, rel_tol=1e-12)
+    with pytest.raises(ValueError, match="between 0 and 1"):
+        towers.retained_ellipse_radius(mass, radius, 2)
+
+
 @given(st.floats(min_value=1e-4, max_value=1 - 1e-4))
 @example(0.25)  # m2 / m1 = 1/3
 def test_mass_ratio_for_retention_inverts_it(r_min: float) -> None:
@@ -269,6 +286,8 @@ def test_rocket_blast_is_one_step_of_the_rocket(
     assert blast.rocket_mass == (n - 1 - b) * m
     assert blast.rocket_mass * blast.boost == m * speed
     assert blast.velocity == sum(towers.rocket_blast(n, m, -speed, j).boost for j in range(b + 1))
+    if speed:  # the b + 1 partial sums of the boosts (the harmonic terms for unit pellets)
+        assert blast.terms == b + 1
     with pytest.raises(ValueError, match="blasts 0 to"):
         towers.rocket_blast(n, m, -speed, n - 1)
     k = data.draw(st.integers(1, n - 1))
