@@ -50,6 +50,35 @@ def flat_area_slope(radius: Any, depth: Any) -> float:
     return slope(lambda x: x * (radius + radius - x), depth)
 
 
+def flat_radius_shallow(radius: Any, depth: Any) -> float:
+    """Radius of the flat of a shallow dent, x << R, to leading order in x (7.1a).
+
+    r^2 = x (2R - x) vanishes at first contact; its leading term is the slope d(r^2)/dx there
+    times x (``flat_area_slope``), so r ~ sqrt(x d(r^2)/dx|0): the sqrt(2 R x) of (7.1a).
+    """
+    inputs.positive(radius, "radius")
+    inputs.real(depth, "depth")
+    if depth < 0:
+        raise ValueError("the depth must not be negative")
+    return math.sqrt(flat_area_slope(radius, 0) * depth)
+
+
+def sagitta_small_flat(radius: Any, flat_radius: Any) -> Any:
+    """Depth x of the dent whose flat has a small radius r << R, to leading order: the bow
+    formula of (7.1b). Inverting r^2 = x (2R - x) at first order in x, x ~ r^2 / (d(r^2)/dx at
+    x = 0), where ``flat_area_slope`` gives the slope."""
+    inputs.positive(radius, "radius")
+    inputs.real(flat_radius, "flat_radius")
+    return flat_radius * flat_radius / flat_area_slope(radius, 0)
+
+
+def flat_area(radius: Any, depth: Any) -> float:
+    """Area pi r^2 of the flat at depth x, the integrand of the dent's volume (7.4): the flat's
+    radius from Thales (``flat_spot_radius``), squared."""
+    r = flat_spot_radius(radius, depth)
+    return math.pi * r * r
+
+
 def sagitta(radius: Any, flat_radius: Any) -> float:
     """Depth x of the dent whose flat has radius r, exactly: R - sqrt(R^2 - r^2) (7.1b).
 
@@ -75,6 +104,13 @@ def balloon_stiffness(pressure: Any, radius: Any, depth: Any) -> float:
     inputs.positive(radius, "radius")
     inputs.real(depth, "depth")
     return slope(lambda x: pressure * math.pi * x * (radius + radius - x), depth)
+
+
+def balloon_force_shallow(pressure: Any, radius: Any, depth: Any) -> float:
+    """Force of a balloon pressed a shallow depth x << R flat, to first order in x (7.2): its
+    spring constant at first contact (``balloon_stiffness`` at x = 0) times x, N."""
+    inputs.real(depth, "depth")
+    return balloon_stiffness(pressure, radius, 0) * depth
 
 
 @dataclass(frozen=True)
@@ -127,6 +163,27 @@ def dent_volume(radius: Any, depth: Any) -> DentVolume:
         whole_ball=whole,
         whole_ball_power=_local_power(lambda r: _dent_volume_over_pi(r, r + r), float(radius)),
     )
+
+
+def dent_volume_shallow(radius: Any, depth: Any) -> float:
+    """Volume of a shallow dent, X << R, to leading order (7.4): the lowest-order term of the
+    integrand pi r(x)^2 = pi x (2R - x) (the power series of ``_dent_polynomial``), integrated
+    from 0 to X."""
+    inputs.positive(radius, "radius")
+    inputs.real(depth, "depth")
+    if depth < 0:
+        raise ValueError("the depth must not be negative")
+    coefficients = _dent_polynomial(radius)
+    lowest = next(k for k, c in enumerate(coefficients) if c != 0)
+    leading = [0] * lowest + [coefficients[lowest]]
+    return math.pi * polynomial_integral(leading, depth)
+
+
+def whole_ball_volume(radius: Any) -> float:
+    """Volume of the whole ball by the dent integral (7.4): the dent as deep as the diameter,
+    V(2R), which the book checks against the ball's volume."""
+    inputs.positive(radius, "radius")
+    return dent_volume(radius, radius + radius).volume
 
 
 def _local_power(f: Any, x: float) -> float:
@@ -277,6 +334,12 @@ def parabola_vertex(a: Any, b: Any) -> Vertex:
     y = -c0 / c1
     u = a * y * y + b * y
     return Vertex(y, u, -b / (a * y), -b * b / (a * u))
+
+
+def quadratic_potential(a: Any, b: Any, y: Any) -> Any:
+    """The total potential U(y) = a y^2 + b y of (7.8a): a target's quadratic a y^2 and the
+    linear potential b y of gravity. Plain operators (exact, symbolic)."""
+    return a * y * y + b * y
 
 
 # --- the soft-contact integrator: Figs. 7.5-7.7, 8.1 -----------------------------------------

@@ -30,6 +30,7 @@ from fractions import Fraction
 from typing import Any
 
 from mechmodel import inputs
+from mechmodel.forces import slope as _slope
 
 # --- power laws and the constructions of Figs. 9.1-9.2 --------------------------------------
 
@@ -59,6 +60,27 @@ def power_law_force(a: Any, n: Any, x: Any) -> Any:
     if x == 0 and n < 1:
         raise ValueError(f"the force of a x^{n} is infinite at x = 0")
     return -n * a * x ** (n - 1)
+
+
+def power_law_force_slope(a: Any, n: Any, x: Any) -> Any:
+    """Slope dF/dx of the force F = -dU/dx of U(x) = a x^n: the power rule applied twice
+    (``power_law_calculus``). For the oscillator U = x^2 it is the constant slope of the Hooke
+    line of Fig. 9.1b."""
+    inputs.real(a, "a")
+    inputs.real(n, "n")
+    inputs.real(x, "x")
+    first = power_law_calculus(n)  # dU/dx = a n x^(n-1)
+    second = power_law_calculus(first.derivative_exponent)
+    if x == 0 and second.derivative_exponent < 0 and first.derivative_coefficient != 0:
+        raise ValueError(f"the force of a x^{n} has no slope at x = 0")
+    if first.derivative_coefficient == 0 or second.derivative_coefficient == 0:
+        return 0 * a
+    return (
+        -a
+        * first.derivative_coefficient
+        * second.derivative_coefficient
+        * x ** (second.derivative_exponent)
+    )
 
 
 @dataclass(frozen=True)
@@ -118,7 +140,8 @@ class ParabolaGeometry:
 
     ``focal_height`` p = 1/(4a) is the focus above the tip and the directrix as far below it;
     ``semi_latus_rectum`` is the book's lambda = 2p, the half-width at the focus;
-    ``focus_to_directrix`` is 2p = lambda; ``tip_radius_of_curvature`` the radius of the osculating
+    ``focus_to_directrix`` is 2p = lambda; ``tip_to_directrix`` the tip's height above the
+    directrix, p; ``tip_radius_of_curvature`` the radius of the osculating
     circle at the tip, also lambda; ``latus_end_slope`` the slope at (lambda, p), where the focal
     radius is horizontal (the square kite of Fig. 9.4); ``focal_factor`` is the 4 of
     x^2 = 4 p y, 1/(a p); ``latus_factor`` the 2 of x^2 = 2 lambda y, 1/(a lambda).
@@ -129,6 +152,7 @@ class ParabolaGeometry:
     semi_latus_rectum: Any
     focus_to_directrix: Any
     directrix_height: Any
+    tip_to_directrix: Any
     tip_radius_of_curvature: Any
     latus_end_slope: Any
     focal_factor: Any
@@ -162,13 +186,15 @@ def parabola_geometry(a: Any) -> ParabolaGeometry:
     inputs.positive(a, "a")
     p = 1 / (4 * a)
     lam = 1 / (2 * a)
+    directrix = -p
     curvature = 2 * a  # y'' at the tip, where y' = 0
     return ParabolaGeometry(
         a=a,
         focal_height=p,
         semi_latus_rectum=lam,
         focus_to_directrix=p + p,
-        directrix_height=-p,
+        directrix_height=directrix,
+        tip_to_directrix=0 - directrix,  # the tip is at height 0
         tip_radius_of_curvature=1 / curvature,
         latus_end_slope=2 * a * lam,
         focal_factor=1 / (a * p),
@@ -188,6 +214,47 @@ def parabola_height_for_latus(lam: Any, x: Any) -> Any:
     ``lam`` (the half-width at the focus, Fig. 9.4): the focus is at p = lam / 2, so
     y = x^2 / (4 p) = x^2 / (2 lam)."""
     return parabola_height_for_focus(lam / 2, x)
+
+
+def parabola_for_focus(p: Any) -> ParabolaGeometry:
+    """The focus-directrix geometry of the parabola whose focus is ``p`` above its tip
+    (Figs. 9.3-9.4): y = a x^2 with a its height at x = 1 (``parabola_height_for_focus``).
+    Exact with a ``Fraction``."""
+    inputs.positive(p, "p")
+    return parabola_geometry(parabola_height_for_focus(p, 1))
+
+
+def parabola_for_latus(lam: Any) -> ParabolaGeometry:
+    """The geometry of the parabola y = a x^2 whose half-width at the focus is ``lam`` (the
+    book's lambda): the points lam across are at the focus's height, a lam^2 = 1/(4a)
+    (``parabola_geometry``'s focal height), so a = 1/(2 lam). Exact with a ``Fraction``."""
+    inputs.positive(lam, "lam")
+    return parabola_geometry(1 / (lam + lam))
+
+
+def parabola_slope_for_focus(p: Any, x: Any) -> float:
+    """Slope dy/dx at ``x`` of the parabola whose focus is ``p`` above its tip, by the complex
+    step on its height (``parabola_height_for_focus``): the x/lambda = x/(2p) of Fig. 9.4."""
+    inputs.positive(p, "p")
+    inputs.real(x, "x")
+    return _slope(lambda u: parabola_height_for_focus(p, u), x)
+
+
+@dataclass(frozen=True)
+class UnitSlopePoint:
+    """The point of slope 1 of a parabola (Figs. 9.4, 9.7): its distance ``x`` across from the
+    axis and its distance ``focal_distance`` from the focus."""
+
+    x: float
+    focal_distance: float
+
+
+def parabola_unit_slope_point(p: Any) -> UnitSlopePoint:
+    """Where the parabola whose focus is ``p`` above its tip has slope 1: the slope is
+    proportional to x (``parabola_slope_for_focus``), so x = 1 / (slope at x = 1); its distance
+    from the focus follows from the point's height (``ParabolaGeometry.focal_radius``)."""
+    x = 1 / parabola_slope_for_focus(p, 1)
+    return UnitSlopePoint(x, parabola_for_focus(p).focal_radius(x))
 
 
 def focal_drop_angle(slope: Any) -> float:
@@ -240,6 +307,31 @@ def coulomb_energy(k: Any, q1: Any, q2: Any, r: Any) -> Any:
     return k * q1 * q2 / r
 
 
+def coulomb_force_from_potential(q1: Any, q2: Any, epsilon0: Any, r: Any) -> Any:
+    """Coulomb force F = -dU/dr at ``r`` from the potential U = q1 q2 r^-1 / (4 pi eps0) of
+    (9.2a), by the power rule (``power_law_calculus``): (9.2b). N for SI inputs."""
+    inputs.positive(epsilon0, "epsilon0")
+    inputs.positive(r, "r")
+    constant = q1 * q2 / (4 * math.pi * epsilon0)
+    calculus = power_law_calculus(-1)  # U ~ r^-1
+    return -constant * calculus.derivative_coefficient * r**calculus.derivative_exponent
+
+
+def coulomb_potential_from_force(q1: Any, q2: Any, epsilon0: Any, r: Any) -> Any:
+    """Coulomb potential U(R) = -integral from infinity to R of the force F = q1 q2 r^-2 /
+    (4 pi eps0) of (9.1), by the power rule (``power_law_calculus``; the antiderivative
+    vanishes at infinity): (9.2c). J for SI inputs."""
+    inputs.positive(epsilon0, "epsilon0")
+    inputs.positive(r, "r")
+    constant = q1 * q2 / (4 * math.pi * epsilon0)
+    calculus = power_law_calculus(-2)  # F ~ r^-2
+    antiderivative = (
+        constant * calculus.antiderivative_coefficient * r**calculus.antiderivative_exponent
+    )
+    at_infinity = 0  # r^(n+1) with n + 1 < 0
+    return -(antiderivative - at_infinity)
+
+
 def coulomb_energy_ratio(r_near: Any, r_far: Any) -> Any:
     """How many times the Coulomb energy (~ 1/r) of charges ``r_near`` apart exceeds that of the
     same charges ``r_far`` apart: r_far / r_near (the book's atom-to-nucleus estimates)."""
@@ -279,6 +371,41 @@ def gravitational_force(big_g: Any, m1: Any, m2: Any, r: Any) -> Any:
     inputs.mass(m1, "m1")
     inputs.mass(m2, "m2")
     return big_g * m1 * m2 * inverse_square(r)
+
+
+def inside_mass(density: Any, r: Any) -> Any:
+    """Mass M< inside the radius ``r`` of a uniform ball of ``density``: the density times the
+    ball's volume (``sphere_volume``), kg ((9.4a))."""
+    return mass_of(density, sphere_volume(r))
+
+
+def inside_gravity_force(big_g: Any, density: Any, mass: Any, r: Any) -> Any:
+    """Pull on ``mass`` at radius ``r`` inside a uniform ball of ``density``: Newton's law
+    (``gravitational_force``) with only the mass M< inside r (the shells outside cancel, Fig.
+    9.6), N ((9.4a))."""
+    return gravitational_force(big_g, mass, inside_mass(density, r), r)
+
+
+def uniform_surface_gravity(big_g: Any, density: Any, radius: Any) -> Any:
+    """Surface gravity g of a uniform ball of ``density`` and ``radius``: the pull on a unit
+    mass at r = R (``inside_gravity_force``), m/s^2 ((9.4b))."""
+    return inside_gravity_force(big_g, density, 1, radius)
+
+
+def gravitational_constant_unit(newton: Any, metre: Any, kilogram: Any) -> Any:
+    """The unit of Newton's constant G: Newton's law F = G M m / r^2 (9.3) solved for G,
+    G = F r^2 / (M m), with each quantity replaced by its unit (N m^2/kg^2). Plain operators:
+    give sympy symbols for a symbolic unit, or numbers for a change of units."""
+    force, distance, mass = newton, metre, kilogram
+    return force * distance * distance / (mass * mass)
+
+
+def coulomb_constant_unit(joule: Any, metre: Any, coulomb: Any) -> Any:
+    """The unit of Coulomb's constant 1/(4 pi eps0): the potential energy U = k q Q / r (9.2a)
+    solved for k, k = U r / (q Q), with each quantity replaced by its unit (J m/C^2). Plain
+    operators (symbolic with sympy symbols)."""
+    energy, distance, charge = joule, metre, coulomb
+    return energy * distance / (charge * charge)
 
 
 # --- nuclear matter and the neutron starlet -------------------------------------------------
@@ -416,6 +543,47 @@ def interior_potential(surface: Any) -> InteriorPotential:
 
 
 @dataclass(frozen=True)
+class InteriorCurve:
+    """The interior potential of ``interior_potential`` at a point x (Fig. 9.7 units):
+    ``value`` is U(x), ``spring`` its quadratic part alone, the potential of the linear force
+    -x / surface^3 with zero at the centre, before the constant that matches -1/x is added."""
+
+    value: Any
+    spring: Any
+
+
+def interior_potential_at(surface: Any, x: Any) -> InteriorCurve:
+    """The parabolic potential inside a uniform planet (``interior_potential``) at ``x``, with
+    |x| <= ``surface`` (GM = 1 units: the book's y = x^2/2 - 3/2 for surface = 1)."""
+    pot = interior_potential(surface)
+    inputs.real(x, "x")
+    if abs(x) > surface:
+        raise ValueError("the point is outside the planet: |x| <= surface")
+    spring = pot.quadratic * x * x
+    return InteriorCurve(spring + pot.offset, spring)
+
+
+def starlet_energy(mass: Any, g: Any, radius: Any, r: Any, speed: Any) -> Any:
+    """Total energy KE + PE of a starlet of ``mass`` moving at ``speed`` at distance ``r`` from
+    the centre of a uniform planet (``potential_energy``, zero at infinity), J ((9.5)-(9.7))."""
+    inputs.real(speed, "speed")
+    return mass * speed * speed / 2 + potential_energy(mass, g, radius, r)
+
+
+def centre_speed_squared(g: Any, radius: Any) -> Any:
+    """Square of the speed at the centre of a starlet dropped from rest at the surface: twice
+    the potential drop per unit mass from R to 0 (``gravity_potential``), m^2/s^2 ((9.7))."""
+    drop = gravity_potential(g, radius, radius) - gravity_potential(g, radius, 0)
+    return 2 * drop
+
+
+def interior_parabola(surface: Any) -> ParabolaGeometry:
+    """The focus-directrix geometry of the interior potential's parabola (Fig. 9.7): its x^2
+    coefficient from ``interior_potential`` (GM = 1 units) in ``parabola_geometry``."""
+    return parabola_geometry(interior_potential(surface).quadratic)
+
+
+@dataclass(frozen=True)
 class EscapeLadder:
     """The starlet's energy (per unit mass, GM = 1 units) on its way out of the planet: at rest
     at the centre, at rest on the surface, in the grazing circular orbit, and just escaping
@@ -480,6 +648,33 @@ def escape_speed_from_orbit_speed(orbit_speed: Any) -> float:
     """Escape speed Ve = v0 sqrt(2) from the grazing orbit speed v0 ((9.11a), the book's step)."""
     inputs.positive(orbit_speed, "orbit_speed")
     return orbit_speed * math.sqrt(2)
+
+
+def escape_speed_of_orbit(orbit_speed: Any) -> float:
+    """Escape speed from a planet's surface given its grazing orbit speed v0, by energies: the
+    circular orbit has v0^2 = GM/R (gravity supplies the centripetal pull) and escape needs the
+    kinetic energy GM m/R that lifts the potential -GM m/R to zero ((9.11a))."""
+    inputs.positive(orbit_speed, "orbit_speed")
+    gm_over_r = orbit_speed * orbit_speed
+    kinetic_per_mass = gm_over_r
+    return math.sqrt(2 * kinetic_per_mass)  # 1/2 v^2 = the kinetic energy per unit mass
+
+
+def escape_speed_gm(big_g: Any, mass: Any, radius: Any) -> float:
+    """Escape speed from the surface of a body of ``mass`` and ``radius``: ``escape_speed``
+    with the surface gravity g = G M / R^2 ((9.11b); with the speed of light, (9.12a))."""
+    inputs.positive(big_g, "G")
+    inputs.mass(mass, "mass")
+    inputs.positive(radius, "radius")
+    return escape_speed(big_g * mass / (radius * radius), radius)
+
+
+def black_hole_radius(big_g: Any, mass: Any, c: Any) -> float:
+    """Radius at which the escape speed from a body of ``mass`` is ``c`` ((9.12b)): the escape
+    speed squared falls as 1/R (``escape_speed_gm``), so R = 1 (v_e(1)/c)^2 in the units of R."""
+    inputs.positive(c, "c")
+    at_unit_radius = escape_speed_gm(big_g, mass, 1)
+    return (at_unit_radius / c) ** 2
 
 
 def surface_speeds(g: Any, radius: Any) -> SurfaceSpeeds:
@@ -626,6 +821,56 @@ def oscillator_orbit(
     ex = (vx * vx + omega * omega * x * x) / 2
     ey = (vy * vy + omega * omega * y * y) / 2
     return OscillatorState(x, y, vx, vy, ex, ey, x * vy - y * vx)
+
+
+def oscillator_amplitude(energy: Any, stiffness: Any) -> float:
+    """Amplitude X of an oscillator of energy E whose potential is 1/2 k x^2: at the turning
+    point all the energy is potential, 1/2 k X^2 = E ((9.8b))."""
+    inputs.positive(energy, "energy")
+    inputs.positive(stiffness, "stiffness")
+    return math.sqrt(energy / (stiffness / 2))
+
+
+def phase_velocity(energy: Any, stiffness: Any, omega: Any, theta: Any) -> float:
+    """Velocity v = dx/dt = (dtheta/dt) (dx/dtheta) of the oscillator x = X sin(theta) of
+    energy E (``oscillator_amplitude``), whose phase turns at the rate ``omega`` ((9.9a))."""
+    inputs.real(omega, "omega")
+    inputs.real(theta, "theta")
+    amplitude = oscillator_amplitude(energy, stiffness)
+    dx_dtheta = amplitude * math.cos(theta)  # d/dtheta of X sin(theta)
+    return omega * dx_dtheta
+
+
+@dataclass(frozen=True)
+class PhaseState:
+    """Position and velocity of an oscillator of energy E, stiffness k and mass m at phase
+    theta ((9.8b)-(9.9)): x = X sin(theta), v = dx/dt, and the phase rate omega."""
+
+    x: float
+    v: float
+    omega: float
+
+
+def oscillator_phase_state(energy: Any, stiffness: Any, mass: Any, theta: Any) -> PhaseState:
+    """The oscillator of ``energy``, ``stiffness`` and ``mass`` at phase ``theta``: x = X
+    sin(theta) with 1/2 k X^2 = E, and v = omega dx/dtheta with omega^2 = k / m, the rate
+    at which m x'' = -k x turns the phase of x = X sin(omega t + alpha) ((9.8)-(9.9))."""
+    inputs.mass(mass, "mass")
+    inputs.real(theta, "theta")
+    amplitude = oscillator_amplitude(energy, stiffness)
+    omega = math.sqrt(stiffness / mass)
+    return PhaseState(
+        amplitude * math.sin(theta), phase_velocity(energy, stiffness, omega, theta), omega
+    )
+
+
+def oscillator_total_energy(mass: Any, stiffness: Any, x: Any, y: Any, vx: Any, vy: Any) -> Any:
+    """Total energy of the isotropic 2-D oscillator at (x, y) with velocity (vx, vy): kinetic
+    1/2 m |v|^2 plus the potential 1/2 k |r|^2 of the linear force F = -k r ((9.10), (9.15)).
+    Plain operators (exact, symbolic)."""
+    kinetic = mass * (vx * vx + vy * vy) / 2
+    potential = stiffness * (x * x + y * y) / 2
+    return kinetic + potential
 
 
 def oscillator_initial_phase(x0: Any, amplitude: Any) -> float:

@@ -211,6 +211,91 @@ def inelastic_quadratic(m1: Any, m2: Any, momentum: Any, energy: Any) -> Inelast
     )
 
 
+@dataclass(frozen=True)
+class InelasticBalance:
+    """The energy balance of (8.2) along the momentum line (8.1), at ball 1's velocity u1.
+
+    ``u2`` is ball 2's velocity from momentum conservation (8.4a); ``kinetic`` the pair's
+    kinetic energy 1/2 m1 u1^2 + 1/2 m2 u2^2 there; ``twice_residual`` twice its excess over the
+    given energy K, 2 (KE - K), the left side of (8.4b), which vanishes at the solutions.
+    """
+
+    u2: Any
+    kinetic: Any
+    twice_residual: Any
+
+
+def inelastic_energy_balance(
+    m1: Any, m2: Any, momentum: Any, energy: Any, u1: Any
+) -> InelasticBalance:
+    """The kinetic energy of two balls of total momentum ``momentum`` when ball 1 moves at
+    ``u1``, and twice its excess over ``energy`` ((8.2) with (8.4a) put in: the quadratic
+    (8.4b) in u1). Plain operators: exact with Fractions."""
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    inputs.real(momentum, "momentum")
+    inputs.real(energy, "energy")
+    inputs.real(u1, "u1")
+    u2 = (momentum - m1 * u1) / m2  # the momentum left for ball 2
+    kinetic = m1 * u1 * u1 / 2 + m2 * u2 * u2 / 2
+    return InelasticBalance(u2, kinetic, 2 * (kinetic - energy))
+
+
+def min_energy_retention(m1: Any, m2: Any) -> Any:
+    """Lowest kinetic-energy retention KE_FIN / KE_IN of a collision from the start
+    (V1, V2) = (V_IN, -V_IN) of Fig. 8.3-8.4 (the Bang(1) point): the totally inelastic
+    (Ka-runch) final state at V_COM, where the energy ellipse shrinks to touch the momentum line
+    ((8.6), Fig. 8.3c). Exact with Fractions."""
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    start = (1, -1)
+    hit = collide(m1, m2, start[0], start[1], 0)
+    before = m1 * start[0] ** 2 + m2 * start[1] ** 2
+    after = m1 * hit.v1 * hit.v1 + m2 * hit.v2 * hit.v2
+    return after / before
+
+
+def min_retention_velocity_ratio(m1: Any, m2: Any) -> Any:
+    """V_COM / V_IN for the start (V_IN, -V_IN): the common velocity of the totally inelastic
+    collision over the initial speed ((8.6a)), from ``collide`` with restitution 0."""
+    inputs.mass(m1, "m1")
+    inputs.mass(m2, "m2")
+    return collide(m1, m2, 1, -1, 0).v1
+
+
+def mass_ratio_for_retention(r_min: Any) -> float:
+    """The mass ratio m2 / m1 <= 1 whose lowest energy retention (``min_energy_retention``)
+    from the start (V_IN, -V_IN) is ``r_min`` ((8.6b) read backward), by bisection: the
+    retention falls from 1 to 0 as m2 / m1 goes from 0 to 1."""
+    inputs.real(r_min, "r_min")
+    if not 0 < r_min < 1:
+        raise ValueError(f"a retention ratio lies between 0 and 1, got {r_min!r}")
+    lo, hi = 0.0, 1.0
+    while True:  # halving [lo, hi] until no float lies between them
+        mid = (lo + hi) / 2
+        if mid in (lo, hi):
+            break
+        if float(min_energy_retention(1.0, mid)) > r_min:
+            lo = mid
+        else:
+            hi = mid
+    return (lo + hi) / 2
+
+
+def retention_from_radii(mass: Any, radius_in: Any, radius_fin: Any) -> Any:
+    """Kinetic-energy retention KE_FIN / KE_IN read off the radii of two energy ellipses along
+    the velocity axis of ``mass`` (Fig. 8.3-8.4): an ellipse (3.7) reaches V = radius on that
+    axis, where all the energy is that ball's, KE = mass radius^2 / 2."""
+    inputs.mass(mass, "mass")
+    inputs.positive(radius_in, "radius_in")
+    inputs.positive(radius_fin, "radius_fin")
+
+    def energy(radius: Any) -> Any:
+        return mass * radius * radius / 2
+
+    return energy(radius_fin) / energy(radius_in)
+
+
 def equal_velocity_line_angle(v_com: Any) -> float:
     """Angle of the line through (V_COM, V_COM) and the origin (V1 = V2), radians: the 45-degree
     line on which the totally inelastic point of Fig. 8.3c-8.4 lies."""
@@ -351,6 +436,54 @@ def pellet_rocket(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any) -> Pell
         first_fast_blast=fast[0] if fast else None,
         first_forward_pellet=forward[0] if forward else None,
     )
+
+
+def retained_ellipse_radius(mass: Any, radius_in: Any, retention: Any) -> float:
+    """Radius, along the velocity axis of ``mass``, of the energy ellipse that keeps the share
+    ``retention`` = KE_FIN / KE_IN of the energy of the ellipse of radius ``radius_in`` (Fig.
+    8.3b): the ellipse (3.7) reaches V = radius on that axis, where KE = mass radius^2 / 2."""
+    inputs.mass(mass, "mass")
+    inputs.positive(radius_in, "radius_in")
+    inputs.real(retention, "retention")
+    if not 0 <= retention <= 1:
+        raise ValueError(f"a retention ratio lies between 0 and 1, got {retention!r}")
+    energy_in = mass * radius_in * radius_in / 2
+    return math.sqrt(2 * retention * energy_in / mass)
+
+
+@dataclass(frozen=True)
+class RocketBlast:
+    """One blast b of the pellet rocket (8.7): the rocket's mass after it (the (10 - b) m of
+    (8.7b)), its velocity boost dV_M(b), its velocity V(b) after it and ``terms``, how many of
+    the boosts (terms of the harmonic series for unit pellets) add up to V(b)."""
+
+    rocket_mass: Any
+    boost: Any
+    velocity: Any
+    terms: int
+
+
+def rocket_blast(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any, blast: Any) -> RocketBlast:
+    """Blast number ``blast`` (0 ... N-2) of the pellet rocket of ``pellet_rocket``."""
+    b = inputs.count(blast, "blast")
+    rocket = pellet_rocket(n_balls, pellet_mass, exhaust_velocity)
+    if b >= rocket.blasts:
+        raise ValueError(f"the rocket has blasts 0 to {rocket.last_blast}, not {b}")
+    sums = list(itertools.accumulate(rocket.boosts))  # the partial sums, as the rocket adds them
+    terms = sums.index(rocket.velocities[b]) + 1
+    return RocketBlast(rocket.rocket_masses[b], rocket.boosts[b], rocket.velocities[b], terms)
+
+
+def blasts_leaving(n_balls: Any, remaining: Any) -> int:
+    """Number of blasts after which ``remaining`` of the ``n_balls`` balls are left in the
+    rocket (Fig. 8.8): the blasts of ``pellet_rocket`` counted until its mass is ``remaining``
+    pellets."""
+    n = inputs.count(n_balls, "n_balls", minimum=2)
+    k = inputs.count(remaining, "remaining", minimum=1)
+    if k >= n:
+        raise ValueError("a blast leaves fewer balls than the rocket started with")
+    rocket = pellet_rocket(n, 1, -1)
+    return next(b + 1 for b, mass in enumerate(rocket.rocket_masses) if mass == k)
 
 
 def rocket_remaining(n_balls: Any, remaining: Any) -> tuple[int, ...]:

@@ -13,7 +13,7 @@ import math
 from fractions import Fraction
 
 import pytest
-from hypothesis import example, given, target
+from hypothesis import assume, example, given, target
 from hypothesis import strategies as st
 
 from checks.properties.strategies import (
@@ -26,7 +26,7 @@ from checks.properties.strategies import (
     rationals,
     soft_masses,
 )
-from mechmodel import contact
+from mechmodel import contact, fields
 from mechmodel.collisions import collide
 
 pytestmark = pytest.mark.properties
@@ -333,3 +333,60 @@ def test_balloon_stiffness_is_the_slope_of_the_balloon_force(
     force = contact.balloon_force
     slope = (force(pressure, radius, depth + h) - force(pressure, radius, depth - h)) / (2 * h)
     assert math.isclose(slope, contact.balloon_stiffness(pressure, radius, depth), rel_tol=1e-5)
+
+
+# --- shallow-dent forms of (7.1)-(7.4), the ball's volume, the completed square (7.8a) ----------
+
+
+@given(gaps(), st.floats(min_value=1e-6, max_value=1))
+@example(1.0, 1e-6)  # first contact: the leading terms are exact to first order
+def test_shallow_dent_forms_are_the_leading_terms(radius: float, fraction: float) -> None:
+    """For a dent of depth x = f R the leading-order forms bound the exact ones and agree with
+    them to first order in f: sqrt(2Rx) >= r with r^2 / (2Rx) = 1 - f/2; the bow formula
+    r^2/2R <= the exact sagitta with ratio >= 1 - (r/R)^2; the balloon's 2 pi P R x >= P pi r^2
+    with the same ratio 1 - f/2; the dent's R pi X^2 >= its volume with ratio 1 - f/3."""
+    depth = fraction * radius
+    r = contact.flat_spot_radius(radius, depth)
+    shallow = contact.flat_radius_shallow(radius, depth)
+    assert r <= shallow * (1 + REL)
+    assert math.isclose(r * r / (shallow * shallow), 1 - fraction / 2, rel_tol=1e-9)
+    flat = contact.flat_spot_radius(radius, depth / 2)  # within the near half: sagitta applies
+    exact = contact.sagitta(radius, flat)
+    bow = contact.sagitta_small_flat(radius, flat)
+    assert bow <= exact * (1 + 1e-9)
+    assert bow >= exact * (1 - (flat / radius) ** 2) * (1 - 1e-9)
+    pressure = 1 / radius
+    ratio = contact.balloon_force(pressure, radius, depth) / contact.balloon_force_shallow(
+        pressure, radius, depth
+    )
+    assert math.isclose(ratio, 1 - fraction / 2, rel_tol=1e-9)
+    volume = contact.dent_volume(radius, depth).volume
+    assert math.isclose(
+        volume / contact.dent_volume_shallow(radius, depth), 1 - fraction / 3, rel_tol=1e-9
+    )
+
+
+@given(gaps(), st.floats(min_value=0.05, max_value=2))
+def test_the_flat_area_integrates_to_the_dent_volume(radius: float, fraction: float) -> None:
+    """The flat's area pi r(x)^2, integrated from 0 to X (Simpson's rule, exact for the
+    quadratic pi x (2R - x)), is the dent's volume (7.4); at X = 2R the whole ball's volume
+    is 4/3 pi R^3 (the volume of a ball by any other method: ``fields.sphere_volume``)."""
+    depth = fraction * radius
+    middle = contact.flat_area(radius, depth / 2)
+    simpson = depth / 6 * (contact.flat_area(radius, 0) + 4 * middle)
+    simpson += depth / 6 * contact.flat_area(radius, depth)
+    assert math.isclose(simpson, contact.dent_volume(radius, depth).volume, rel_tol=1e-9)
+    whole = contact.whole_ball_volume(radius)
+    assert math.isclose(whole, fields.sphere_volume(radius), rel_tol=1e-12)
+    assert math.isclose(contact.whole_ball_volume(2 * radius), 8 * whole, rel_tol=1e-12)
+
+
+@given(fraction_quantities(), rationals(-10, 10, 12), rationals(-10, 10, 12))
+def test_quadratic_potential_bottoms_at_the_vertex(a: Fraction, b: Fraction, y: Fraction) -> None:
+    """U = a y^2 + b y (7.8a) is a (y - y_shift)^2 + U_shift with the vertex of
+    ``parabola_vertex``: exactly, with Fractions, and no point lies below the vertex."""
+    assume(b != 0)
+    vertex = contact.parabola_vertex(a, b)
+    u = contact.quadratic_potential(a, b, y)
+    assert u == a * (y - vertex.y_shift) ** 2 + vertex.u_shift
+    assert u >= contact.quadratic_potential(a, b, vertex.y_shift) == vertex.u_shift

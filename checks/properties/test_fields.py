@@ -24,6 +24,7 @@ from checks.properties.strategies import (
     oscillator_amplitudes,
     oscillator_frequencies,
     oscillator_times,
+    phase_angles,
     planet_radii,
     radial_fractions,
     rationals,
@@ -527,3 +528,205 @@ def test_coulomb_force_is_minus_the_slope_of_coulomb_energy(q: float, r: float) 
     force = fields.coulomb_force(k, q, q, r)
     assert math.isclose(-slope, force, rel_tol=1e-6)
     assert math.isclose(fields.coulomb_force(k, q, q, r / 2), 4 * force, rel_tol=1e-12)
+
+
+# --- the formulas of chapter 9 as the book writes them: parabola by p or lambda, Coulomb by
+# calculus, a uniform ball, the starlet's energy, the oscillator's phase, escape ----------------
+
+
+@given(fraction_coefficients(), st.integers(min_value=0, max_value=6), rationals(-10, 10, 12))
+@example(Fraction(1), 2, Fraction(3))  # Fig. 9.1b: the Hooke line of U = x^2 has slope -2
+def test_force_slope_is_the_power_rule_again(a: Fraction, n: int, x: Fraction) -> None:
+    """The slope of F = -dU/dx for U = a x^n: x dF/dx = (n - 1) F (F goes as x^(n-1)),
+    exactly; for the oscillator n = 2 it is the constant -2a of the straight Hooke line."""
+    if x == 0:
+        x = Fraction(1, 3)
+    slope = fields.power_law_force_slope(a, n, x)
+    assert x * slope == (n - 1) * fields.power_law_force(a, n, x)
+    assert fields.power_law_force_slope(a, 2, x) == -2 * a
+
+
+@given(fraction_coefficients())
+@example(Fraction(1, 4))  # y = x^2: p = 1/4, lambda = 1/2
+def test_parabola_by_focus_and_by_latus_agree(p: Fraction) -> None:
+    """The parabola whose focus is p above its tip is the one of half-width lambda = 2p at the
+    focus (Figs. 9.3-9.4): exactly; its tip is p below the focus and p above the directrix,
+    the points lambda across are at the focus's height, and the tip's radius of curvature is
+    lambda."""
+    by_focus = fields.parabola_for_focus(p)
+    assert by_focus.focal_height == p
+    assert fields.parabola_for_latus(by_focus.semi_latus_rectum) == by_focus
+    lam = by_focus.semi_latus_rectum
+    assert by_focus.height(lam) == by_focus.focal_height == by_focus.tip_to_directrix
+    assert by_focus.tip_radius_of_curvature == lam
+
+
+@given(st.floats(min_value=0.01, max_value=100), st.floats(min_value=-10, max_value=10))
+def test_parabola_slope_and_its_point_of_slope_one(p: float, x: float) -> None:
+    """The slope of the parabola of focal height p is the derivative of its height (a central
+    difference agrees); it is 1 at the end of the latus rectum, level with the focus, whose
+    focal radius is then horizontal: its distance from the focus is its distance x across."""
+    h = 1e-6 * max(abs(x), p)
+    height = fields.parabola_height_for_focus
+    difference = (height(p, x + h) - height(p, x - h)) / (2 * h)
+    slope = fields.parabola_slope_for_focus(p, x)
+    assert math.isclose(slope, difference, rel_tol=1e-6, abs_tol=1e-9 * (1 + abs(x) / p))
+    point = fields.parabola_unit_slope_point(p)
+    assert math.isclose(fields.parabola_slope_for_focus(p, point.x), 1, rel_tol=4 * REL)
+    assert math.isclose(height(p, point.x), p, rel_tol=4 * REL)
+    assert math.isclose(point.focal_distance, point.x, rel_tol=4 * REL)
+
+
+@given(
+    st.floats(min_value=-10, max_value=10).filter(lambda q: abs(q) > 1e-3),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=10),
+)
+def test_coulomb_force_and_potential_by_calculus(
+    q: float, big_q: float, epsilon0: float, r: float
+) -> None:
+    """(9.2b)-(9.2c): the force found as -dU/dr of the potential, and the potential found as
+    minus the integral of the force from infinity, are Coulomb's k q Q / r^2 and k q Q / r
+    with k = 1/(4 pi eps0); the potential's slope is minus the force."""
+    k = 1 / (4 * math.pi * epsilon0)
+    force = fields.coulomb_force_from_potential(q, big_q, epsilon0, r)
+    potential = fields.coulomb_potential_from_force(q, big_q, epsilon0, r)
+    assert math.isclose(force, fields.coulomb_force(k, q, big_q, r), rel_tol=4 * REL)
+    assert math.isclose(potential, fields.coulomb_energy(k, q, big_q, r), rel_tol=4 * REL)
+    h = r * 1e-6
+    slope = (
+        fields.coulomb_potential_from_force(q, big_q, epsilon0, r + h)
+        - fields.coulomb_potential_from_force(q, big_q, epsilon0, r - h)
+    ) / (2 * h)
+    assert math.isclose(-slope, force, rel_tol=1e-6)
+
+
+@given(surface_gravities(), planet_radii(), st.floats(min_value=0.01, max_value=1))
+def test_a_uniform_ball_pulls_linearly_inside(g: float, radius: float, fraction: float) -> None:
+    """Inside a uniform ball only the mass within r pulls (9.4a): the pull grows linearly with
+    r, reaches the surface gravity G R 4 pi rho / 3 at r = R (9.4b), and matches the field of a
+    uniform Earth of that surface gravity; the inside mass is the density times the volume."""
+    big_g = 6.7e-11
+    density = g / (big_g * radius * 4 * math.pi / 3)  # the density that gives the gravity g
+    r = fraction * radius
+    assert math.isclose(
+        fields.inside_mass(density, r), density * fields.sphere_volume(r), rel_tol=4 * REL
+    )
+    pull = fields.inside_gravity_force(big_g, density, 1.0, r)
+    half = fields.inside_gravity_force(big_g, density, 1.0, r / 2)
+    assert math.isclose(half, pull / 2, rel_tol=8 * REL)
+    surface = fields.uniform_surface_gravity(big_g, density, radius)
+    assert math.isclose(surface, g, rel_tol=8 * REL)
+    assert math.isclose(pull, -fields.gravity_field(g, radius, r), rel_tol=8 * REL)
+    assert math.isclose(fields.inside_gravity_force(big_g, density, 3.0, r), 3 * pull, rel_tol=REL)
+
+
+@given(fraction_coefficients(), rationals(-1, 1, 12))
+@example(Fraction(1), Fraction(1))  # Fig. 9.7: U(1) = -1 = -1/x at the surface
+def test_interior_curve_is_the_parabola_under_the_surface(surface: Fraction, u: Fraction) -> None:
+    """The interior potential at x (|x| <= surface) is its spring part x^2 / (2 s^3), zero at
+    the centre, plus the offset; it meets -1/x at the surface, exactly. Its parabola's
+    half-width at the focus is s^3 (lambda = 1 in Fig. 9.7)."""
+    x = u * surface
+    curve = fields.interior_potential_at(surface, x)
+    pot = fields.interior_potential(surface)
+    assert curve.spring == x * x / (2 * surface**3)
+    assert curve.value - curve.spring == pot.offset
+    assert fields.interior_potential_at(surface, surface).value == -1 / surface
+    assert fields.interior_potential_at(surface, 0).spring == 0
+    assert fields.interior_parabola(surface).semi_latus_rectum == surface**3
+    with pytest.raises(ValueError, match="outside"):
+        fields.interior_potential_at(surface, 2 * surface)
+
+
+@given(surface_gravities(), planet_radii(), st.floats(min_value=0.1, max_value=10))
+def test_the_starlet_keeps_its_energy_from_surface_to_centre(
+    g: float, radius: float, mass: float
+) -> None:
+    """Dropped from rest at the surface, the starlet passes the centre with v^2 = g R, the
+    grazing orbit's speed squared ((9.6)-(9.7)): its energy KE + PE is the same at both."""
+    v2 = fields.centre_speed_squared(g, radius)
+    assert math.isclose(v2, fields.circular_orbit_speed(g, radius) ** 2, rel_tol=4 * REL)
+    at_surface = fields.starlet_energy(mass, g, radius, radius, 0)
+    at_centre = fields.starlet_energy(mass, g, radius, 0, math.sqrt(v2))
+    assert math.isclose(at_surface, at_centre, rel_tol=8 * REL)
+    assert math.isclose(at_surface, -mass * g * radius, rel_tol=8 * REL)
+
+
+@given(surface_gravities(), planet_radii(), surface_gravities())
+def test_escape_speed_three_ways(g: float, radius: float, c: float) -> None:
+    """The escape speed from the grazing orbit speed (9.11a), from G M and R (9.11b) and from
+    g and R agree; it falls as 1/sqrt(R); at the black-hole radius it is c (9.12), which is
+    the Schwarzschild radius 2GM/c^2."""
+    big_g = 6.7e-11
+    mass = g * radius * radius / big_g
+    escape = fields.escape_speed(g, radius)
+    orbit = fields.circular_orbit_speed(g, radius)
+    assert math.isclose(fields.escape_speed_of_orbit(orbit), escape, rel_tol=4 * REL)
+    assert math.isclose(fields.escape_speed_gm(big_g, mass, radius), escape, rel_tol=8 * REL)
+    quarter = fields.escape_speed_gm(big_g, mass, 4 * radius)
+    assert math.isclose(quarter, escape / 2, rel_tol=8 * REL)
+    hole = fields.black_hole_radius(big_g, mass, c)
+    assert math.isclose(fields.escape_speed_gm(big_g, mass, hole), c, rel_tol=8 * REL)
+    assert math.isclose(hole, fields.schwarzschild_radius(big_g, mass, c), rel_tol=8 * REL)
+
+
+@given(
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=10),
+    phase_angles(),
+)
+def test_oscillator_phase_state_keeps_the_energy(
+    energy: float, k: float, mass: float, theta: float
+) -> None:
+    """At every phase the oscillator's kinetic and potential energies add up to E ((9.8a));
+    the velocity is the phase rate omega = sqrt(k/m) times dx/dtheta ((9.9)), the time
+    derivative of x = X sin(omega t) (a central difference agrees)."""
+    state = fields.oscillator_phase_state(energy, k, mass, theta)
+    total = mass * state.v**2 / 2 + k * state.x**2 / 2
+    assert math.isclose(total, energy, rel_tol=8 * REL)
+    assert math.isclose(state.omega**2, k / mass, rel_tol=4 * REL)
+    assert state.v == fields.phase_velocity(energy, k, state.omega, theta)
+    h = 1e-6 / state.omega
+    ahead = fields.oscillator_phase_state(energy, k, mass, theta + state.omega * h).x
+    behind = fields.oscillator_phase_state(energy, k, mass, theta - state.omega * h).x
+    amplitude = fields.oscillator_amplitude(energy, k)
+    assert math.isclose((ahead - behind) / (2 * h), state.v, abs_tol=1e-6 * amplitude * state.omega)
+
+
+@given(
+    oscillator_frequencies(),
+    oscillator_amplitudes(),
+    oscillator_amplitudes(),
+    phase_angles(),
+    oscillator_times(),
+)
+def test_total_energy_is_the_sum_of_the_dimensions(
+    omega: float, amp_x: float, amp_y: float, lag: float, t: float
+) -> None:
+    """The isotropic oscillator's total energy is ex + ey, the energies of its x and y motions
+    ((9.10)): for a unit mass with k = omega^2 it is the sum of the orbit's two per-dimension
+    energies, the same at every time."""
+    state = fields.oscillator_orbit(omega, amp_x, amp_y, 0.0, lag, t)
+    total = fields.oscillator_total_energy(1, omega * omega, state.x, state.y, state.vx, state.vy)
+    expected = omega * omega * (amp_x * amp_x + amp_y * amp_y) / 2  # at the turning points
+    assert close(total, state.energy_x + state.energy_y, expected)
+    assert close(total, expected, expected, TRIG)
+
+
+@given(fraction_quantities(), fraction_quantities(), fraction_quantities(), fraction_quantities())
+def test_constant_units_keep_the_laws_in_any_units(
+    newton: Fraction, metre: Fraction, kilogram: Fraction, coulomb: Fraction
+) -> None:
+    """Measured in other units (a newton, metre, kilogram, coulomb worth the given numbers, a
+    joule a newton metre), G and Coulomb's constant take the factors of their units, and
+    Newton's law (9.3) and the potential (9.2a) hold unchanged, exactly: N = [G] kg^2/m^2 and
+    J = [k] C^2/m."""
+    g_unit = fields.gravitational_constant_unit(newton, metre, kilogram)
+    assert g_unit * kilogram * kilogram / (metre * metre) == newton
+    joule = newton * metre
+    k_unit = fields.coulomb_constant_unit(joule, metre, coulomb)
+    assert k_unit * coulomb * coulomb / metre == joule
+    assert fields.gravitational_constant_unit(1, 1, 1) == fields.coulomb_constant_unit(1, 1, 1) == 1

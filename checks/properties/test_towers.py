@@ -209,6 +209,93 @@ def test_inelastic_quadratic_roots_keep_momentum_and_energy(
     assert quad.v_com == center_of_mass_velocity((m1, m2), (u1, u2))
 
 
+@given(moderate_fraction_masses(), moderate_fraction_masses(), st.data())
+def test_energy_balance_follows_the_momentum_line(
+    m1: Fraction, m2: Fraction, data: st.DataObject
+) -> None:
+    """Along the momentum line (8.1) ball 2 carries what momentum ball 1 leaves (8.4a); the
+    kinetic energy there is the pair's, and twice its excess over a given K, the left side of
+    (8.4b), vanishes at K = the pair's energy, exactly with Fractions."""
+    u1 = data.draw(rationals(-5, 5, 10))
+    u2 = data.draw(rationals(-5, 5, 10))
+    p = m1 * u1 + m2 * u2
+    k = kinetic_energy((m1, m2), (u1, u2))
+    balance = towers.inelastic_energy_balance(m1, m2, p, k, u1)
+    assert balance.u2 == u2
+    assert balance.kinetic == k
+    assert balance.twice_residual == 0
+    other = data.draw(rationals(-5, 5, 10))
+    shifted = towers.inelastic_energy_balance(m1, m2, p, k, other)
+    assert shifted.twice_residual == 2 * (kinetic_energy((m1, m2), (other, shifted.u2)) - k)
+    assert m1 * other + m2 * shifted.u2 == p
+
+
+@given(moderate_fraction_masses(), moderate_fraction_masses())
+@example(Fraction(2), Fraction(1))
+def test_lowest_retention_is_the_square_of_the_common_velocity(m1: Fraction, m2: Fraction) -> None:
+    """From the start (V_IN, -V_IN) a Ka-runch leaves both balls at V_COM: the retained share
+    of the kinetic energy is (V_COM / V_IN)^2 (the pair's energy is then all its COM energy),
+    exactly with Fractions, between 0 and 1; it is the square of the radius ratio of the two
+    energy ellipses along either axis ((8.6), Figs. 8.3-8.4)."""
+    ratio = towers.min_retention_velocity_ratio(m1, m2)
+    retention = towers.min_energy_retention(m1, m2)
+    assert retention == ratio * ratio
+    assert 0 <= retention <= 1
+    scale = abs(ratio) if ratio else Fraction(1, 2)
+    assert towers.retention_from_radii(m1, Fraction(3), 3 * scale) == scale * scale
+    assert towers.retention_from_radii(m2, Fraction(3), 3 * scale) == scale * scale
+
+
+@given(
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=0.1, max_value=10),
+    st.floats(min_value=1e-4, max_value=1),
+)
+def test_retained_radius_shrinks_as_the_root_of_the_retention(
+    mass: float, radius: float, retention: float
+) -> None:
+    """The ellipse keeping the share R of the energy has sqrt(R) times the radius along each
+    axis (Fig. 8.3b), whatever the axis's mass: its radius gives R back."""
+    kept = towers.retained_ellipse_radius(mass, radius, retention)
+    assert math.isclose(kept, radius * math.sqrt(retention), rel_tol=1e-12)
+    assert math.isclose(towers.retention_from_radii(mass, radius, kept), retention, rel_tol=1e-12)
+    with pytest.raises(ValueError, match="between 0 and 1"):
+        towers.retained_ellipse_radius(mass, radius, 2)
+
+
+@given(st.floats(min_value=1e-4, max_value=1 - 1e-4))
+@example(0.25)  # m2 / m1 = 1/3
+def test_mass_ratio_for_retention_inverts_it(r_min: float) -> None:
+    """The mass ratio m2/m1 <= 1 found for a lowest retention gives that retention back."""
+    q = towers.mass_ratio_for_retention(r_min)
+    assert 0 < q <= 1
+    assert math.isclose(towers.min_energy_retention(1.0, q), r_min, rel_tol=1e-12, abs_tol=1e-15)
+    with pytest.raises(ValueError, match="between 0 and 1"):
+        towers.mass_ratio_for_retention(1.5)
+
+
+@given(st.integers(2, 15), moderate_fraction_masses(), fraction_quantities(), st.data())
+def test_rocket_blast_is_one_step_of_the_rocket(
+    n: int, m: Fraction, speed: Fraction, data: st.DataObject
+) -> None:
+    """Blast b keeps momentum: the rocket left, (N - 1 - b) m, takes the boost m |ve| / M_b
+    (8.7b), and its velocity is the sum of the boosts so far; the blasts leaving k balls
+    number N - k, and the first ball left is labelled with that count (Fig. 8.8)."""
+    b = data.draw(st.integers(0, n - 2))
+    blast = towers.rocket_blast(n, m, -speed, b)
+    assert blast.rocket_mass == (n - 1 - b) * m
+    assert blast.rocket_mass * blast.boost == m * speed
+    assert blast.velocity == sum(towers.rocket_blast(n, m, -speed, j).boost for j in range(b + 1))
+    if speed:  # the b + 1 partial sums of the boosts (the harmonic terms for unit pellets)
+        assert blast.terms == b + 1
+    with pytest.raises(ValueError, match="blasts 0 to"):
+        towers.rocket_blast(n, m, -speed, n - 1)
+    k = data.draw(st.integers(1, n - 1))
+    count = towers.blasts_leaving(n, k)
+    assert count == n - k
+    assert towers.rocket_remaining(n, k)[0] == count
+
+
 @given(st.lists(soft_masses(), min_size=2, max_size=3), contact_powers())
 # Newton once hopped between two ends three roundings apart, where the integrations' own
 # noise outweighed the overlap, and gave up ("touch or release not located")
