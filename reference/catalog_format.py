@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any
 
 import tomlkit
-from tomlkit.items import AoT, Comment, Table, Whitespace
+from tomlkit.items import AoT, Comment, Table
 
 from reference.schema import Claim, Excluded, Meta, Slip
 
@@ -101,41 +101,80 @@ def _reorder(table: Table, order: Iterable[str], defaults: dict[str, Any]) -> Ta
     return out
 
 
-def format_text(text: str) -> str:
-    """One catalog file's text in canonical form (comments and the text of values kept)."""
-    document = tomlkit.parse(text)
+def _chunks(text: str) -> list[str]:
+    """The file split before each table header: the preamble, then one chunk per entry (its
+    header, its keys, and the comment lines after them, which open the next section)."""
+    chunks: list[list[str]] = [[]]
+    for line in text.splitlines():
+        if line.startswith("["):
+            chunks.append([])
+        chunks[-1].append(line)
+    return ["\n".join(c) + "\n" for c in chunks if c]
+
+
+def _split_trailer(chunk: str) -> tuple[str, str]:
+    """An entry's text and the comment and blank lines after its last key, which open the
+    next section and are kept as written."""
+    lines = chunk.splitlines()
+    cut = len(lines)
+    while cut > 1 and (not lines[cut - 1].strip() or lines[cut - 1].startswith("#")):
+        cut -= 1
+    return "\n".join(lines[:cut]) + "\n", "".join(line + "\n" for line in lines[cut:])
+
+
+def _format_chunk(chunk: str) -> str:
+    body, trailer = _split_trailer(chunk)
+    document = tomlkit.parse(body)
+    names = list(document)
+    if len(names) != 1:  # the preamble (comments only) or an unknown shape: as written
+        return chunk
+    name = names[0]
+    container = document[name]
     out = tomlkit.document()
-    for _, item in document.body:  # the file's opening comments
-        if isinstance(item, Comment | Whitespace):
-            out.add(item)
-        else:
-            break
-    if "meta" in document:
-        out.add("meta", _reorder(document["meta"], META_KEYS, _defaults(Meta)))
-    for name, (model, order) in TABLES.items():
-        if name not in document:
-            continue
-        rows = document[name]
-        assert isinstance(rows, AoT)
-        out.add(name, tomlkit.aot())
-        for row in rows:
-            out[name].append(_reorder(row, order, _defaults(model)))
-    for key in document:
-        if key not in out:
-            out.add(key, document[key])
-    return _tidy(tomlkit.dumps(out))
+    if name == "meta" and isinstance(container, Table):
+        out.add(name, _reorder(container, META_KEYS, _defaults(Meta)))
+    elif name in TABLES and isinstance(container, AoT) and len(container) == 1:
+        model, order = TABLES[name]
+        rows = tomlkit.aot()
+        rows.append(_reorder(container[0], order, _defaults(model)))
+        out.add(name, rows)
+    else:
+        return chunk
+    return tomlkit.dumps(out) + trailer
+
+
+def format_text(text: str) -> str:
+    """One catalog file's text in canonical form: each entry's keys in the fixed order and
+    without defaults; entries, their order and the comments between them as written."""
+    return _tidy("".join(_format_chunk(chunk) for chunk in _chunks(text)))
 
 
 def _tidy(text: str) -> str:
-    """One blank line before each table header, none doubled, one newline at the end."""
-    lines = text.splitlines()
+    """One blank line before each table header, or before the comments that open it; blank
+    lines the author left kept, none doubled; one newline at the end."""
+    lines = [line.rstrip() for line in text.splitlines()]
     out: list[str] = []
-    for line in lines:
-        if line.startswith("[") and out and out[-1].strip():
+    for i, line in enumerate(lines):
+        if not line:
+            if out and out[-1]:
+                out.append("")
+            continue
+        opens = line.startswith("[") or (
+            line.startswith("#") and _next_nonblank(lines, i).startswith("[")
+        )
+        follows_comment = bool(out) and out[-1].startswith("#") and line.startswith("[")
+        if opens and out and out[-1] and not follows_comment:
             out.append("")
-        if line.strip() or (out and out[-1].strip()):
-            out.append(line)
-    return "\n".join(out).rstrip("\n") + "\n"
+        out.append(line)
+    return "\n".join(out).strip("\n") + "\n"
+
+
+def _next_nonblank(lines: list[str], i: int) -> str:
+    """The first line after ``i`` that is neither blank nor a comment."""
+    for line in lines[i + 1 :]:
+        if line.strip() and not line.startswith("#"):
+            return line
+    return ""
 
 
 def diff(path: Path, text: str, formatted: str) -> str:

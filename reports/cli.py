@@ -8,15 +8,16 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from collections import Counter
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from reference.book import BookError, book_path, chapter_keys, load_book
+from reference.book import BOOK_ENV, BookError, book_path, chapter_keys, load_book
 from reference.calls import ModelCallError
-from reference.catalog import CatalogDirectoryError, catalog_paths
+from reference.catalog import CatalogDirectoryError, catalog_paths, default_directory
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
 from reference.power import ClassRate, PowerReport
@@ -69,6 +70,15 @@ def _parser() -> argparse.ArgumentParser:
         "power", parents=[common], help="detection power: would a misprint have been caught?"
     )
     power.add_argument("--json", action="store_true", help="one JSON document")
+
+    fmt = sub.add_parser(
+        "fmt", parents=[common], help="write the catalog in its canonical form (docs/catalog.md)"
+    )
+    fmt.add_argument(
+        "--check",
+        action="store_true",
+        help="write nothing: show a diff, exit 1 if any file differs",
+    )
 
     report = sub.add_parser("report", parents=[common], help="the errata report (HTML, CSV, JSON)")
     report.add_argument(
@@ -307,6 +317,39 @@ def _invariants(given: Path | None) -> dict[str, Any] | None:
         return None
 
 
+def _fmt_catalog(args: argparse.Namespace) -> int:
+    """``bangcheck fmt``: every catalog file (of the chosen chapters) in canonical form, written
+    only when the whole catalog validates (against the book when one is given); ``--check``
+    writes nothing and exits 1 with a diff when a file is not in canonical form."""
+    from reference.catalog_format import diff, format_text, write_atomically
+
+    directory = args.catalog if args.catalog is not None else Path(str(default_directory()))
+    book = load_book(book_path(args.book)) if args.book or os.environ.get(BOOK_ENV) else None
+    catalog = checked_catalog(book, args.catalog)
+    chosen = {
+        f.stem for f in catalog.files if args.chapters is None or f.meta.chapter in args.chapters
+    }
+    changed = 0
+    for path in catalog_paths(directory):
+        path = Path(str(path))
+        if path.stem not in chosen:
+            continue
+        text = path.read_text(encoding="utf-8")
+        formatted = format_text(text)
+        if formatted == text:
+            continue
+        changed += 1
+        if args.check:
+            sys.stdout.write(diff(path, text, formatted))
+        else:
+            write_atomically(path, formatted)
+            print(f"bangcheck: formatted {shown(path)}", file=sys.stderr)
+    if args.check and changed:
+        print(f"bangcheck: {changed} catalog file(s) not in canonical form", file=sys.stderr)
+        return EXIT_FINDINGS
+    return EXIT_OK
+
+
 def _report(args: argparse.Namespace) -> int:
     from reports.page import build_report
 
@@ -365,7 +408,13 @@ def _run(argv: Sequence[str] | None) -> int:
         except CatalogDirectoryError as err:
             parser.error(str(err))
     try:
-        commands = {"claims": _claims, "scan": _scan, "power": _power, "report": _report}
+        commands = {
+            "claims": _claims,
+            "scan": _scan,
+            "power": _power,
+            "fmt": _fmt_catalog,
+            "report": _report,
+        }
         return commands[args.command](args)
     except (BookError, CatalogDirectoryError, OutputError, PropertiesError) as err:
         print(f"bangcheck: error: {err}", file=sys.stderr)
