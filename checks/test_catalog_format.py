@@ -85,7 +85,7 @@ def test_check_shows_a_diff_exits_one_and_writes_nothing(
     out, err = capsys.readouterr()
     assert code == 1
     assert f"--- {draft}" in out
-    assert "\n-line = " in out
+    assert re.search(r"\n[-+](id|line) = ", out)
     assert "1 catalog file(s) not in canonical form" in err
     assert draft.read_bytes() == before
 
