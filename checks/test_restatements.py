@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -78,10 +79,11 @@ def test_a_disagreement_is_a_scan_conflict_not_a_catalog_error(book: Book, tmp_p
     """A draft catalog with one edited value still evaluates; ``scan`` names the restatements
     that no longer agree with it."""
     text = (CLAIMS / "ch08.toml").read_text(encoding="utf-8")
-    head = 'id = "ch08.tower-3.ratio"\nline = 6564\nquote = "exactly 3-times the one above"\n'
-    edited = text.replace(
-        head + 'printed = "3"\n',
-        head + 'printed = "3"\nmeans = "4"\ngarble = "other"\nnote = "a draft\'s edit"\n',
+    edited = re.sub(
+        r'(id = "ch08.tower-3.ratio"\n(?:.+\n)*?printed = "3"\n)',
+        '\\1means = "4"\ngarble = "other"\nnote = "a draft\'s edit"\n',
+        text,
+        count=1,
     )
     assert edited != text
     (tmp_path / "ch08.toml").write_text(edited, encoding="utf-8")

@@ -29,6 +29,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
+from scipy import optimize
+
 from mechmodel import inputs
 from mechmodel.forces import slope as _slope
 
@@ -214,6 +216,30 @@ def parabola_height_for_latus(lam: Any, x: Any) -> Any:
     ``lam`` (the half-width at the focus, Fig. 9.4): the focus is at p = lam / 2, so
     y = x^2 / (4 p) = x^2 / (2 lam)."""
     return parabola_height_for_focus(lam / 2, x)
+
+
+def equidistant_height(p: float, x: float) -> float:
+    """Height y of the point at ``x`` that is as far from the focus (0, p) as from the
+    directrix y = -p (the parabola's definition, Fig. 9.3b), found as the root of
+    |(x, y) - (0, p)| - (y + p), which is positive at y = 0 and negative far above (it tends
+    to -2p): a check of 4 p y = x^2 that does not use it. Floats; p > 0."""
+    inputs.positive(p, "p")
+
+    def excess(y: float) -> float:
+        return math.hypot(x, y - p) - (y + p)
+
+    if excess(0.0) <= 0:
+        return 0.0  # x = 0: the tip
+    top = p
+    while excess(top) > 0:
+        top *= 2
+    return float(optimize.brentq(excess, 0.0, top, xtol=1e-15, rtol=4 * sys.float_info.epsilon))
+
+
+def equidistant_height_for_latus(lam: float, x: float) -> float:
+    """``equidistant_height`` for the parabola of semi-latus rectum ``lam``: at the focus's
+    height the distance to the directrix is 2p, so the points there are 2p across: p = lam/2."""
+    return equidistant_height(lam / 2, x)
 
 
 def parabola_for_focus(p: Any) -> ParabolaGeometry:

@@ -577,6 +577,17 @@ def test_parabola_slope_and_its_point_of_slope_one(p: float, x: float) -> None:
     assert math.isclose(point.focal_distance, point.x, rel_tol=4 * REL)
 
 
+@given(st.floats(min_value=0.01, max_value=100), st.floats(min_value=-30, max_value=30))
+def test_the_equidistant_point_is_on_the_parabola(p: float, x: float) -> None:
+    """The point found from the definition (as far from the focus as from the directrix) is
+    at the height 4 p y = x^2 gives, and of the parabola of semi-latus rectum 2p."""
+    y = fields.equidistant_height(p, x)
+    assert math.isclose(math.hypot(x, y - p), y + p, rel_tol=1e-12)
+    assert math.isclose(y, fields.parabola_height_for_focus(p, x), rel_tol=1e-9, abs_tol=1e-12 * p)
+    latus = fields.equidistant_height_for_latus(2 * p, x)
+    assert math.isclose(latus, y, rel_tol=1e-12, abs_tol=1e-15 * p)
+
+
 @given(
     st.floats(min_value=-10, max_value=10).filter(lambda q: abs(q) > 1e-3),
     st.floats(min_value=0.1, max_value=10),
