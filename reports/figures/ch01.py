@@ -64,10 +64,13 @@ def _slope_axes(ax: Axes, sx: float, sy: float, horizontal: str) -> None:
 @figure(
     "slope-plots",
     "Fig. 1.2",
-    "The jet (600 mph), SUV (60 mph) and VW (10 mph) lines on Minkowski's t-vs-x plot (a) and "
-    "Newton's x-vs-t plot (b), one graph square being 0.1 mile by 6 s, so that the SUV line is "
-    "the 1:1 diagonal of both. Each slope, in graph squares, is the model's s_x/(v s_y) in (a) "
-    "and v s_y/s_x in (b); the two plots are mirror images in that diagonal.",
+    (
+        "The jet (600 mph), SUV (60 mph) and VW (10 mph) as lines of time t (s) against "
+        "position x (mile) in Minkowski's plot (a) and of x against t in Newton's (b), one "
+        "graph square being 0.1 mile by 6 s so that the SUV line is the 1:1 diagonal of both. "
+        "The slopes, from the model, are in graph squares; the two plots are mirror images in "
+        "that diagonal."
+    ),
     (
         "ch01.plot.unit-speed-mph",
         "ch01.plot.suv-slope",
@@ -117,7 +120,8 @@ def _slope_plots(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     right.text(
         0.97,
         0.03,
-        f"in ft vs s the SUV slope\nis $(f_x/f_y)\\cdot{suv:.4g}$ = {rescaled_slope(suv, fx, fy):.4g}",
+        f"in ft vs s the SUV slope\nis $(f_x/f_y)\\cdot{suv:.4g}$"
+        f" = {rescaled_slope(suv, fx, fy):.4g}",
         transform=right.transAxes,
         ha="right",
         va="bottom",
@@ -198,12 +202,13 @@ def _whirl(ax: Axes, sigma: float, terms: int) -> None:
 @figure(
     "trig-segments-whirl",
     "Figs. 1.4b and 1.5b",
-    "Left: the trigonometric ratios of σ = 1 radian as segments of the unit circle (Fig. 1.4b), "
-    "lengths in units of its radius. "
-    "Right: the whirling-rectangle side sequence tan σ, 1, cot σ, cot²σ, ... (Fig. 1.5b) from "
-    "the model, starting up the same tangent segment tan σ, whose slope angle is σ - π/2 = -σc: "
-    "each side is the last one turned a quarter turn clockwise and shrunk by cot σ. (The book "
-    "prints the slope angle as -1 radian and the caption's cot σ with two digits swapped.)",
+    (
+        "Left (Fig. 1.4b): the trigonometric ratios of σ = 1 rad as segments of the unit "
+        "circle. Right (Fig. 1.5b): whirling rectangles whose sides tan σ, 1, cot σ, cot²σ, … "
+        "each turn a quarter turn clockwise and shrink by cot σ, starting up the tangent "
+        "segment at the slope angle σ − π/2 = −σc; lengths in units of the radius. The book "
+        "prints that angle as −1 radian and the caption's cot σ with two digits swapped."
+    ),
     (
         "ch01.fig14.base",
         "ch01.fig14.altitude",

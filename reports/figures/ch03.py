@@ -17,10 +17,12 @@ if TYPE_CHECKING:
 @figure(
     "energy-ellipses",
     "Fig. 3.1",
-    "The crash of the 4-ton SUV at 60 mph into the 1-ton VW at 10 mph in the (V_SUV, V_VW) "
-    "plane of velocities in mph: the elastic KE ellipse through the initial point, the "
-    "inelastic IE ellipse through the COM point, and the momentum line that both collisions "
-    "stay on; energies in ton·mph².",
+    (
+        "The crash of the 4-ton SUV at 60 mph into the 1-ton VW at 10 mph in the plane of their"
+        " velocities (mph): the elastic KE ellipse through the initial point IN, the inelastic "
+        "IE ellipse through the COM point, and the momentum line both collisions stay on; "
+        "energies in ton·mph²."
+    ),
     ("ch03.suv-vw.ke", "ch03.suv-vw.ie"),
 )
 def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:

@@ -84,9 +84,12 @@ def _two_panels(fig: Figure, height: float = 4.8) -> tuple[Axes, Axes]:
 @figure(
     "x2-two-bangs",
     "Fig. 4.4",
-    "The two bangs of the X2 launcher (M1:M2 = 7:1, both dropped at unit speed) in the "
-    "(V1, V2) plane: (a) Bang-1(01), M1 off the floor, a horizontal jump; (b) Bang-2(12), M1 "
-    "hits M2, along the momentum line of slope -M1/M2. Both stay on the energy ellipse.",
+    (
+        "The two bangs of the X2 launcher (M₁:M₂ = 7:1, both dropped at unit speed) in the "
+        "plane of the velocities (V₁, V₂), in units of the drop speed: (a) Bang-1(01), M₁ off "
+        "the floor, a horizontal jump; (b) Bang-2(12), M₁ hits M₂, along the bang line of slope"
+        " −M₁/M₂. Both stay on the energy ellipse."
+    ),
     (
         "ch04.history.bang1.v1",
         "ch04.history.bang1.v2",
@@ -121,11 +124,14 @@ def _two_bangs(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "x2-final-locus",
     "Fig. 4.5",
-    "(a) Final (V1, V2) of the X2 launch for mass ratios M1/M2 from 1/64 to 1024 (line) and "
-    "for infinite M1/M2 (point I): all lie on the 45° line CPL. (b) The bang lines from INIT "
-    "(+1, -1) to the points U (ratio 1), M (the ratio that stops M1: all energy to M2), the "
-    "7:1 superball and pen, and I; and the U line Galileo-boosted by -1 (the pool shot) and "
-    "at half that speed.",
+    (
+        "(a) The final velocities (V₁, V₂) of the X2 launch for mass ratios M₁/M₂ from 1/64 to "
+        "1024 (line) and for an infinite one (point I): all lie on the 45° line CPL. (b) The "
+        "bang lines from INIT (+1, −1) to the points U (ratio 1), M (the ratio that stops M₁, "
+        "all energy to M₂), the 7:1 superball and pen, and I; dashed and dotted: the U line "
+        "Galileo-boosted by −1 (the pool shot) and by half that. Velocities in units of the "
+        "drop speed."
+    ),
     (
         "ch04.x2.final-locus-angle",
         "ch04.x2.inf.speed-ratio",
@@ -177,10 +183,12 @@ def _final_locus(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "bang-history-7-1",
     "Figs. 4.6-4.8",
-    "Space-time history of the 7:1 pair (M1 from height 1, M2 from 3, both falling at unit "
-    "speed; floor at 0, elastic ceiling at 7) from the event simulator, to Bang-9: heights "
-    "against time, each bang numbered and labelled by its kind (01 floor, 12 ball-ball, 02 "
-    "ceiling). The cross is the book's y2(2) = 3 at Bang-2, where the paths in fact meet.",
+    (
+        "Heights against time of the 7:1 pair from the event simulator (M₁ from height 1, M₂ "
+        "from 3, both falling at unit speed; floor at 0, elastic ceiling at 7; scaled units) to"
+        " Bang-9, each bang numbered with its kind (01 floor, 12 ball-ball, 02 ceiling). The "
+        "cross is the book's y₂(2) = 3 at Bang-2, where the paths in fact meet."
+    ),
     (
         "ch04.history.bang1.time",
         "ch04.history.bang2.time",
@@ -235,11 +243,13 @@ def _space_time(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "energy-ellipse-7-1",
     "Fig. 4.9",
-    "The 7:1 history in the (V1, V2) plane: every bang is a jump between two points of the "
-    "energy ellipse 7 V1² + V2² = 8 (horizontal off the floor, vertical off the ceiling, slope "
-    "-7 between the balls), after 15 and after 150 bangs. The minor semi-axis, along V1, is "
-    "a = sqrt(2 KE/M1) = sqrt(8/7) and the major one b = sqrt(8): the book prints the two "
-    "values the other way round.",
+    (
+        "The 7:1 history in the plane of the velocities (V₁, V₂), in units of the drop speed, "
+        "after 15 (a) and 150 (b) bangs: every bang jumps between two points of the energy "
+        "ellipse 7V₁² + V₂² = 8 (horizontally off the floor, vertically off the ceiling, at "
+        "slope −7 between the balls). Its semi-axes are a = √(2 KE/M₁) = √(8/7) along V₁ and b "
+        "= √8: the book prints the two values the other way round."
+    ),
     (
         "ch04.ellipse.twice-energy",
         "ch04.ellipse.minor",
@@ -285,13 +295,14 @@ def _ellipse_fill(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "space-space-7-1",
     "Figs. 4.11-4.12",
-    "The 7:1 history as one billiard ball: left, the velocity vectors v(n) = (V1, V2) after "
-    "each bang on the energy ellipse; right, the position y(n) = (y1, y2) bouncing inside the "
-    "triangle of floor (y1 = 0), ceiling (y2 = 7) and the 45° collision line y2 = y1, each "
-    "segment along the v(n) drawn from y(n). At Bang-2 on the collision line: the line of "
-    "slope -M1/M2, along which the velocity jumps (v(2) - v(1)), and its perpendicular facet of "
-    "slope M2/M1. The book calls the first the bisector of the incident and reflected paths; "
-    "that holds only for equal masses: the true bisector (grey) is drawn too.",
+    (
+        "The 7:1 history as one billiard ball, in scaled units: (a) the velocities v(n) = (V₁, "
+        "V₂) after each bang, on the energy ellipse; (b) the positions y(n) = (y₁, y₂) bouncing"
+        " inside the triangle of floor, ceiling and collision line y₂ = y₁, each step along "
+        "v(n). At Bang-2: the bang line of slope −M₁/M₂ and its perpendicular facet. The book "
+        "calls the bang line the bisector of the incident and reflected paths, which holds only"
+        " for equal masses; the true bisector is grey."
+    ),
     (
         "ch04.history.bang1.y1",
         "ch04.history.bang1.y2",

@@ -39,8 +39,11 @@ FLAG = ((0.45, 0.1), (0.95, 0.1), (0.95, 0.26), (0.62, 0.26), (0.62, 0.42), (0.4
 @figure(
     "bang-sequence-49-1",
     "Fig. 5.1(a)",
-    "The 49:1 pair under a ceiling in the (v1, v2) plane: each ball-ball bang and ceiling bang "
-    "from the state (1, -1) after the floor bounce, to the last bang, on the energy ellipse.",
+    (
+        "The 49:1 pair under a ceiling in the plane of the velocities (v₁, v₂), scaled: each "
+        "ball-ball and ceiling bang from the state (1, −1) after the floor bounce to the last "
+        "bang, all on the energy ellipse."
+    ),
     ("ch05.pair-49-1.v1-after-9", "ch05.pair-49-1.v1-after-11", "ch05.pair-49-1.v2-after-11"),
 )
 def _bang_sequence(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -82,11 +85,13 @@ def _bang_sequence(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "bang-history-49-1",
     "Fig. 5.1(b)",
-    "Heights against time of the 49:1 pair from the event simulator: the balls start stacked "
-    "on the floor after Bang-1 (velocities (1, -1)), under a ceiling at unit height (the book "
-    "prints no heights: scale arbitrary), with the floor open after Bang-1. Little m2 rattles "
-    "between m1 and the ceiling and turns m1 back; after Bang-21 both fall, and the last bang "
-    "(off the plot) comes long after.",
+    (
+        "Heights against time of the 49:1 pair from the event simulator, stacked on the floor "
+        "after Bang-1 with velocities (1, −1) under a ceiling at unit height (the book prints "
+        "no heights), the floor open after Bang-1. Little m₂ rattles between m₁ and the ceiling"
+        " and turns m₁ back; after Bang-21 both fall, and the last bang (off the plot) comes "
+        "long after."
+    ),
     (
         "ch05.pair-49-1.v1-after-9",
         "ch05.pair-49-1.v1-after-11",
@@ -143,11 +148,13 @@ def _hand(ax: Axes, v: tuple[float, float], label: str, colour: str) -> None:
 @figure(
     "velocity-clock-49-1",
     "Fig. 5.2(b)-(c)",
-    "Left: the 49:1 sequence of Fig. 5.1 in mass-scaled velocities V = (v1 √m1, v2 √m2), where "
-    "the energy ellipse is a circle; a ball bang reflects V in the collision line (angle θ/2), "
-    "a ceiling bang in the V1 axis, so each double bang turns the clock hand by -θ. Right: "
-    "the bang triangle with base m1 - m2, altitude 2√(m1 m2) and hypotenuse m1 + m2 that "
-    "defines θ.",
+    (
+        "(b) The 49:1 sequence of Fig. 5.1 in mass-scaled velocities V = (v₁√m₁, v₂√m₂), where "
+        "the energy ellipse is a circle: a ball bang reflects V in the collision line, a "
+        "ceiling bang in the V₁ axis, so each double bang turns the clock hand by −θ. (c) The "
+        "bang triangle with base m₁ − m₂, altitude 2√(m₁m₂) and hypotenuse M = m₁ + m₂ that "
+        "defines θ."
+    ),
     (
         "ch05.pair-49-1.theta",
         "ch05.pair-49-1.double-bang-angle",
@@ -259,10 +266,12 @@ def _mirror_axes(ax: Axes, title: str) -> None:
 @figure(
     "mirrors-and-rotations",
     "Fig. 5.3",
-    "Left: a flag and its mirror images under ±σA (mirrors along the x and y axes) and ±σB "
-    "(mirrors at ±π/4), each mirror dotted in its image's colour. Right: two mirrors, σA and "
-    "σφ tilted at φ/2 (here the 60° of the clothing-store mirrors, Fig. 5.4a): the products "
-    "σφσA and σAσφ are rotations by +φ and -φ, not reflections.",
+    (
+        "(a) A flag and its images under the reflections ±σA (mirrors along the axes) and ±σB "
+        "(mirrors at ±π/4), each mirror dotted in its image's colour. (b) Two mirrors σA and σφ"
+        " tilted at φ/2 (the 60° of the clothing-store mirrors of Fig. 5.4a): the products σφσA"
+        " and σAσφ are rotations by +φ and −φ, not reflections."
+    ),
     (
         "ch05.sigma-b.mirror-angle",
         "ch05.minus-sigma-b.mirror-angle",

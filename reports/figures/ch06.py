@@ -30,9 +30,11 @@ RELEASE_FRACTION = 1 / 3
 @figure(
     "force-laws",
     "Fig. 6.1, (6.4)-(6.11)",
-    "Bang-force laws on the big ball at gap Y (a tiny ball of unit mass, unit speed at Y = 1; "
-    "scaled units): isothermal F = m₂v₂²/Y and adiabatic F = m₂(v₀Y₀)²/Y³ (left), and their "
-    "potentials -m₂v₂² ln Y and ½m₂(v₀Y₀/Y)² (right).",
+    (
+        "Bang-force laws on the big ball at gap Y, for a tiny ball of unit mass at unit speed "
+        "at Y = 1 (scaled units): (a) the isothermal force F = m₂v₂²/Y and the adiabatic F = "
+        "m₂(v₀Y₀)²/Y³; (b) their potentials −m₂v₂² ln Y and ½m₂(v₀Y₀/Y)²."
+    ),
     ("ch06.isothermal.inverse-power", "ch06.adiabatic.inverse-power"),
 )
 def _force_laws(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -68,9 +70,12 @@ def _two_gas_force(big_m: float, m: float, v0: float, y0: float, x: float) -> fl
 @figure(
     "two-gas-oscillator",
     "Fig. 6.3(c)",
-    "Quasi-harmonic oscillation of M = 50 between two adiabatic gases of m = 0.1 at v0 = 20 "
-    "in ranges Y0 = 3, released at rest a third of the way to one wall (our choice: the book "
-    "gives no start). Dashed: the harmonic motion with the spring constant at x = 0.",
+    (
+        "Displacement against time of M = 50 kg oscillating between two adiabatic gases of m = "
+        "0.1 kg at v₀ = 20 m/s in ranges Y₀ = 3 m, released at rest a third of the way to one "
+        "wall (our choice: the book gives no start). Dashed: the harmonic motion with the "
+        "spring constant at x = 0."
+    ),
     (
         "ch06.fig6-3c.big-mass",
         "ch06.fig6-3c.small-mass",
@@ -116,9 +121,11 @@ def _two_gas_oscillator(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "trapped-ball",
     "Fig. 6.4(a)",
-    "The little ball trapped between the big ball closing at v1 = 1 and the wall at x = 0, "
-    "starting at rest 3 units out: space-time paths (x across, t up); the range times the "
-    "speed at each wall bang stays 3.",
+    (
+        "Space-time paths (scaled units) of the little ball trapped between the big ball "
+        "closing at v₁ = 1 and the wall at x = 0, starting at rest 3 units out: the range times"
+        " the speed at each wall bang stays 3."
+    ),
     ("ch06.trapped.after-bang-1", "ch06.trapped.action"),
 )
 def _trapped_ball(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:

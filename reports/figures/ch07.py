@@ -54,10 +54,12 @@ def _soft_pair(ax: Axes, power: float, title: str) -> tuple[float, float]:
 @figure(
     "soft-pair-quartic",
     "Fig. 7.6",
-    "CrapCorp's zero-gap simulation: the 7:1 pair of Fig. 4.4 dropped at speed 1 onto the floor "
-    "with quartic contact forces F = ky⁴ (floor and ball-ball alike, no gravity during the "
-    "contact), heights of the balls' bottoms (the floor at 0) in scaled units. RumpCo's "
-    "independent bangs give 0.5 and 2.5.",
+    (
+        "CrapCorp's zero-gap simulation: the 7:1 pair of Fig. 4.4 dropped at speed 1 onto the "
+        "floor with quartic contact forces F = ky⁴ (floor and ball-ball alike, no gravity "
+        "during the contact); heights of the balls' bottoms in scaled units. RumpCo's "
+        "independent bangs give 0.5 and 2.5."
+    ),
     ("ch07.crapcorp.v1", "ch07.crapcorp.v2", "ch07.rumpco.v1", "ch07.rumpco.v2"),
 )
 def _soft_pair_quartic(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -80,9 +82,11 @@ def _soft_pair_quartic(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "soft-pair-linear",
     "Fig. 7.7",
-    "Linear force kills super-elastic bounce: the same 7:1 pair with linear contact forces "
-    "F = ky. The two balls leave nearly together (compare the quartic case of Fig. 7.6); "
-    "heights of the balls' bottoms in scaled units.",
+    (
+        "Linear force kills super-elastic bounce: the same 7:1 pair with linear contact forces "
+        "F = ky leaves nearly together (compare the quartic case of Fig. 7.6); heights of the "
+        "balls' bottoms in scaled units."
+    ),
     ("ch07.crapcorp.v2", "ch07.rumpco.v2"),
 )
 def _soft_pair_linear(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -95,10 +99,13 @@ def _soft_pair_linear(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "linear-targets",
     "Fig. 7.4",
-    "Total potentials u(y) = y above the target and ay² + y inside it (graph units, y = Y/10 m) "
-    "for the hardball (a = 8), medium (a = 1) and softball (a = 1/4) targets; the dotted line "
-    "is the energy of the 30 m fall (y = 3). The dot is the book's hardball stop, y = -0.61, "
-    "where the target's 8y² alone takes up that energy; the total potential reaches it at -0.68.",
+    (
+        "Total potentials u(y) = y above the target and ay² + y inside it (graph units, y = "
+        "Y/10 m) for the hardball (a = 8), medium (a = 1) and softball (a = 1/4) targets, and "
+        "the energy of the 30 m fall (dotted, y = 3). The dot is the book's hardball stop y = "
+        "−0.61, where the target's 8y² alone takes up that energy; the total potential reaches "
+        "it at −0.68."
+    ),
     ("ch07.hardball.quadratic", "ch07.softball.quadratic", "ch07.hardball.stop"),
 )
 def _linear_targets(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:

@@ -18,8 +18,11 @@ if TYPE_CHECKING:
 @figure(
     "tower-100-30-10",
     "Fig. 8.1(b)",
-    "The 100/30/10 tower with independent collisions: each bang in the plane of the two "
-    "velocities it changes, from START to END along the momentum line of slope -m_lower/m_upper.",
+    (
+        "The 100/30/10 tower with independent collisions: each bang in the plane of the two "
+        "velocities it changes (scaled), from START to END along the momentum line of slope "
+        "−(lower mass)/(upper mass)."
+    ),
     ("ch08.tower-100-30-10.v1", "ch08.tower-100-30-10.v2-mid", "ch08.tower-100-30-10.v3"),
 )
 def _tower(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -81,10 +84,12 @@ def _tower_paths(ax: Axes, masses: list[float], power: float, v_drop: float, tit
 @figure(
     "tower-zero-gap",
     "Fig. 8.1(a), (c)",
-    "The 100/30/10 tower dropped at speed 1 with zero gaps, integrated with one contact law for "
-    "the floor and both ball pairs and no gravity during the contact: (a) quartic F = ky⁴, the "
-    "top ball leaves at 3.41; (c) linear F = ky, super-elastic bounce squelched. Heights of the "
-    "balls' bottoms (the floor at 0) in scaled units.",
+    (
+        "The 100/30/10 tower dropped at speed 1 with zero gaps, integrated with one contact law"
+        " for the floor and both ball pairs and no gravity during the contact: (a) quartic F = "
+        "ky⁴, the top ball leaves at 3.41; (c) linear F = ky, super-elastic bounce squelched. "
+        "Heights of the balls' bottoms in scaled units."
+    ),
     ("ch08.tower-100-30-10.v3-quartic", "ch08.tower-100-30-10.v3"),
 )
 def _tower_zero_gap(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -100,10 +105,12 @@ def _tower_zero_gap(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "four-ball-towers",
     "Fig. 8.2(a), (b)",
-    "Velocities of the balls of the 4-ball towers with independent bangs, each ball 3 (a) or 7 "
-    "(b) times the one above, in units of the drop speed: after each bang, the rising ball's "
-    "velocity grows by the factor 2mₖ/(mₖ + mₖ₊₁) on V + 1; the top ball reaches 5.75 and "
-    "9.72. Solid: each ball's velocity after its bang; dotted: the final velocities.",
+    (
+        "Velocities, in units of the drop speed, of the 4-ball towers with independent bangs, "
+        "each ball 3 (a) or 7 (b) times the one above: at each bang the rising ball's velocity "
+        "grows by the factor 2mₖ/(mₖ + mₖ₊₁) on V + 1, and the top ball reaches 5.75 and 9.72. "
+        "Solid: each ball just after its bang; dotted: the final velocities."
+    ),
     ("ch08.tower-3.top", "ch08.tower-7.top"),
 )
 def _four_ball_towers(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -144,9 +151,11 @@ def _four_ball_towers(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "pellet-rocket",
     "Fig. 8.8",
-    "The rocket of 11 unit balls blown apart one pellet at a time at exhaust velocity -1: the "
-    "rocket's velocity V(b) after blast b (harmonic partial sums) and each pellet's final "
-    "velocity V(b-1) - 1; pellets 7, 8, 9 end up moving forward.",
+    (
+        "The rocket of 11 unit balls blown apart one pellet at a time at exhaust velocity −1, "
+        "velocities in units of |vₑ|: the rocket's V(b) after blast b (harmonic partial sums) "
+        "and each pellet's final velocity V(b−1) − 1; pellets 7, 8 and 9 end up moving forward."
+    ),
     ("ch08.rocket.velocity-9", "ch08.rocket.first-forward-pellet", "ch08.rocket.first-fast-blast"),
 )
 def _pellet_rocket(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:

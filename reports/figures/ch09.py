@@ -27,9 +27,12 @@ if TYPE_CHECKING:
 @figure(
     "tunnel-and-orbit",
     "Fig. 9.8",
-    "A body dropped through a tunnel across a uniform Earth and a satellite in the grazing "
-    "circular orbit keep the same x coordinate and meet on the far side after half a period; "
-    "a body in a tunnel off the centre (dashed chord) keeps the same time.",
+    (
+        "A body dropped through a tunnel across a uniform Earth and a satellite in the grazing "
+        "circular orbit keep the same x coordinate and meet on the far side after half a "
+        "period; a body in a tunnel off the centre (dashed chord) keeps the same time. "
+        "Positions in units of the Earth's radius R, times in minutes."
+    ),
     ("ch09.tunnel-time", "ch09.orbit-speed", "ch09.tunnel.period"),
 )
 def _tunnel(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -87,10 +90,12 @@ def _tunnel(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "earth-potential",
     "Fig. 9.7",
-    "Potential and field of a uniform Earth in units of mgR and mg, against x = r/R: the "
-    "parabola (x² - 3)/2 inside meets -1/x outside at the surface with the same slope; the "
-    "focus of the parabola is λ = 1 straight across from the surface point and its directrix "
-    "λ below.",
+    (
+        "Potential and field of a uniform Earth in units of mgR and mg, against x = r/R: the "
+        "parabola (x² − 3)/2 inside meets −1/x outside at the surface with the same slope; the "
+        "focus of the parabola is λ = 1 straight across from the surface point and its "
+        "directrix λ below."
+    ),
     (
         "ch09.earth.interior-offset",
         "ch09.earth.surface-potential",
@@ -131,9 +136,12 @@ def _earth_potential(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "parabola-focus-directrix",
     "Figs. 9.3-9.4",
-    "The parabola y = x² (scaled units): every point is as far from the focus (0, 1/4) as from "
-    "the directrix y = -1/4 (the numbers: that distance); the half-width at the focus is "
-    "λ = 1/2, where the slope is 1 and the kite of focal radius and drop line is a square.",
+    (
+        "The parabola y = x² (scaled units): every point is as far from the focus (0, 1/4) as "
+        "from the directrix y = −1/4 (the numbers give that distance); the half-width at the "
+        "focus is λ = 1/2, where the slope is 1 and the kite of focal radius and drop line is a"
+        " square."
+    ),
     ("ch09.parabola.lambda", "ch09.parabola.focal-points", "ch09.parabola.square-kite-slope"),
 )
 def _parabola(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -176,10 +184,12 @@ def _parabola(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "starlet-orbits",
     "Figs. 9.10-9.11",
-    "Orbits of a starlet inside the Earth: x and y oscillate with the same amplitude and "
-    "period, x behind y by 0 to 8 hours of the 16-hour phasor clock; every orbit is an ellipse "
-    "inside the square envelope |x|, |y| ≤ amplitude. The 2-hour (45°) orbit of Fig. 9.10b "
-    "(bold) is marked with its (x, y) clock hours.",
+    (
+        "Orbits of a starlet inside the Earth, in units of their amplitude: x and y oscillate "
+        "with the same amplitude and period, x behind y by 0 to 8 hours of the 16-hour phasor "
+        "clock, and every orbit is an ellipse inside the square |x|, |y| ≤ 1. The 2-hour (45°) "
+        "orbit of Fig. 9.10b (bold) is marked with its (x, y) clock hours."
+    ),
     ("ch09.phasor.lag-angle", "ch09.phasor.y-hour", "ch09.phasor.quadrature-rad"),
 )
 def _starlet_orbits(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:

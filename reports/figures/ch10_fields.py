@@ -160,11 +160,13 @@ def _key(fig: Figure) -> None:
 @figure(
     "complex-potentials",
     "Figs. 10.7-10.14",
-    "Six complex potentials φ(z) = Φ + iA and their fields f = dφ/dz, over the z-plane: "
-    "equipotentials Φ = Re φ (blue), field lines A = Im φ (red) and the direction of the "
-    "plotted field vector f* (arrows, all of one length). The fields are z, z², the line source "
-    "q/z and the vortex iq/z (q = 1; the branch cut of ln z, where A or Φ jumps by 2πq, is left "
-    "undrawn), the dipole 1/z² and the quadrupole 1/z³; all quantities dimensionless.",
+    (
+        "Six complex potentials φ(z) = Φ + iA over the z-plane with their fields f = dφ/dz: "
+        "equipotentials Φ (blue), field lines A (red) and the direction of the plotted field "
+        "vector f* (arrows of one length), for the fields z, z², the line source q/z and the "
+        "vortex iq/z (q = 1), the dipole 1/z² and the quadrupole 1/z³; all dimensionless. The "
+        "branch cut of ln z, where A or Φ jumps by 2πq, is left undrawn."
+    ),
     ("ch10.source.q",),
 )
 def _complex_potentials(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -220,10 +222,12 @@ def _complex_potentials(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "dipole-pair",
     "Fig. 10.11 and (10.41)",
-    "Left: a source +1 at z = -D/2 and a sink -1 at z = +D/2 (D = 1), with the field "
-    "f = 1/(z + D/2) - 1/(z - D/2); right: the point dipole they tend to as D shrinks with "
-    "the product of charge and D held fixed, f = -D/z². Equipotentials Φ (blue), field lines A "
-    "(red) and the direction of f* (arrows); all quantities dimensionless.",
+    (
+        "(Left) A source +1 at z = −D/2 and a sink −1 at z = +D/2 (D = 1), with the field f = "
+        "1/(z + D/2) − 1/(z − D/2); (right) the point dipole they tend to as D shrinks with the"
+        " charge times D held fixed, f = −D/z². Equipotentials Φ (blue), field lines A (red) "
+        "and the direction of f* (arrows); all dimensionless."
+    ),
     ("ch10.dipole.position-divisor",),
 )
 def _dipole(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -267,14 +271,19 @@ def _dipole(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "stereographic-map",
     "Fig. 10.15",
-    "The stereographic picture of 1/z: a sphere of diameter D stands on the w-plane at S and "
-    "touches the z-plane at N; the line from S through a point P of the sphere meets the z-plane "
-    "at |z| = D tan(theta/2), the line from N through P meets the w-plane at |w| = D cot(theta/2), "
-    "so that |z||w| = D^2 (w = 1/z for D = 1). Rays drawn for theta = 30 to 150 degrees.",
+    (
+        "The stereographic picture of 1/z, lengths in units of the sphere's diameter D: the "
+        "sphere stands on the w-plane at S and touches the z-plane at N; the line from S "
+        "through a point P of the sphere at angle θ meets the z-plane at |z| = D tan(θ/2), the "
+        "line from N through P the w-plane at |w| = D cot(θ/2), so that |z||w| = D² (w = 1/z "
+        "for D = 1). Rays for θ = 30° to 150°."
+    ),
     ("ch10.stereo.diameter",),
 )
 def _stereographic(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     d = value_of(claims, "ch10.stereo.diameter")
+    fig.set_size_inches(9.0, 3.8)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     angles = [math.pi * k / 100 for k in range(201)]
     ax.plot(
@@ -284,8 +293,8 @@ def _stereographic(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     )
     ax.axhline(d, color="C0", linewidth=0.8)
     ax.axhline(0, color="C3", linewidth=0.8)
-    ax.annotate("z-plane", (-2.4 * d, d), textcoords="offset points", xytext=(0, 4), color="C0")
-    ax.annotate("w-plane", (-2.4 * d, 0), textcoords="offset points", xytext=(0, 4), color="C3")
+    ax.annotate(r"$z$-plane", (-2.4 * d, d), textcoords="offset points", xytext=(0, 4), color="C0")
+    ax.annotate(r"$w$-plane", (-2.4 * d, 0), textcoords="offset points", xytext=(0, 4), color="C3")
     for degrees in (30, 60, 120, 150):
         theta = math.radians(degrees)
         point = stereographic_projection(theta, d)
@@ -293,18 +302,38 @@ def _stereographic(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         ax.plot([0, point.z_radius], [0, d], color="C0", linewidth=0.7)
         ax.plot([0, point.w_radius], [d, 0], color="C3", linewidth=0.7)
         ax.plot([px], [py], "ko", markersize=3)
+        ax.plot([point.z_radius], [d], "o", color="C0", markersize=3)
+        ax.plot([point.w_radius], [0], "o", color="C3", markersize=3)
         ax.annotate(
-            f"{degrees}°: |z| = {point.z_radius:.2f}, |w| = {point.w_radius:.2f}",
+            f"{degrees}°", (px, py), textcoords="offset points", xytext=(4, 0), fontsize="small"
+        )
+        ax.annotate(
+            f"$|z|$ = {point.z_radius:.2f}",
             (point.z_radius, d),
             textcoords="offset points",
-            xytext=(2, 6),
-            fontsize="x-small",
-            rotation=30,
+            xytext=(0, 4),
+            fontsize="small",
+            color="C0",
+            rotation=45,
+            rotation_mode="anchor",
+        )
+        ax.annotate(
+            f"$|w|$ = {point.w_radius:.2f}",
+            (point.w_radius, 0),
+            textcoords="offset points",
+            xytext=(0, -5),
+            ha="right",
+            va="top",
+            fontsize="small",
+            color="C3",
+            rotation=45,
+            rotation_mode="anchor",
         )
     ax.plot([0, 0], [0, d], "k:", linewidth=0.6)
-    ax.annotate("N", (0, d), textcoords="offset points", xytext=(-10, 4))
-    ax.annotate("S", (0, 0), textcoords="offset points", xytext=(-10, -12))
-    ax.set_xlim(-2.5 * d, 4 * d)
-    ax.set_ylim(-0.3 * d, 1.6 * d)
+    ax.annotate("N", (0, d), textcoords="offset points", xytext=(-12, 4))
+    ax.annotate("S", (0, 0), textcoords="offset points", xytext=(-12, -14))
+    ax.set_xlim(-2.5 * d, 4.2 * d)
+    ax.set_ylim(-0.75 * d, 1.75 * d)
     ax.set_aspect("equal")
-    ax.set_yticks([])
+    ax.set_xlabel("distance from the axis NS (units of $D$)")
+    ax.set_ylabel("height above S (units of $D$)")

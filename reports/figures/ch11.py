@@ -39,12 +39,14 @@ _ARROWS = (("C1", r"$\mathbf{v}$"), ("C2", r"$\mathbf{a}$"), ("C3", r"$\mathbf{j
 @figure(
     "oscillator-orbit",
     "Figs. 11.1, 11.5 and 11.8",
-    "Left: the orbit r = (a cos ωt, b sin ωt) of Fig. 11.1 (a = 2.2, b = 1, ω = 1) at twelve equal "
-    "time steps, with the velocity, acceleration and jerk arrows (half length) at one of them; "
-    "the mass is a/b = 2.2 times faster crossing the minor axis than at the ends of the major "
-    "axis, and the shaded sectors swept in equal times have equal areas (Fig. 11.8). Right: r, "
-    "v/ω, a/ω² and j/ω³ all lie on the same ellipse, a quarter turn of phase apart "
-    "(Fig. 11.5(a)). Lengths in the scaled units of a and b.",
+    (
+        "(a) The orbit r = (a cos ωt, b sin ωt) of Fig. 11.1 (a = 2.2, b = 1, ω = 1; scaled "
+        "lengths) at twelve equal time steps, with the velocity, acceleration and jerk (half "
+        "length) at one of them: the mass crosses the minor axis a/b = 2.2 times faster than "
+        "the ends of the major one, and the sectors swept in equal times have equal areas (Fig."
+        " 11.8). (b) r, v/ω, a/ω² and j/ω³ all lie on the same ellipse, a quarter turn of phase"
+        " apart (Fig. 11.5(a))."
+    ),
     (
         "ch11.apsis-speed-ratio",
         "ch11.fig11-5.phase-step",
@@ -114,10 +116,12 @@ def _orbit(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "triads",
     "Fig. 11.7 and (11.18)",
-    "The Q-ellipse r·Q·r = 1 (solid, a = 2, b = 1/2, ab = 1) and its dual p·Q⁻¹·p = 1 "
-    "(dashed, radii 1/a and 1/b) with the triad sequence started at φ0 = π/4: the radius "
-    "r(φk-1) = (a cos φk, b sin φk) and the perpendicular p(φk+1) = Q·r(φk-1) of each triad, "
-    "on lines of slope (a/b)^k (dotted). Lengths scaled.",
+    (
+        "The Q-ellipse r·Q·r = 1 (solid, a = 2, b = 1/2) and its dual p·Q⁻¹·p = 1 (dashed, "
+        "radii 1/a and 1/b), in scaled lengths, with the triad sequence started at φ₀ = π/4: "
+        "the radius r(φₖ₋₁) = (a cos φₖ, b sin φₖ) and the perpendicular p(φₖ₊₁) = Q·r(φₖ₋₁) of"
+        " each triad, on lines of slope (a/b)ᵏ (dotted)."
+    ),
     (
         "ch11.triad.phi0-slope",
         "ch11.triad.p1.x-divisor",
@@ -169,12 +173,13 @@ def _triads(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "rod-cycloids",
     "Figs. 11.9 and 11.10",
-    "A free rod of length L = 2l struck at height h = l/2 above its centre rolls on a 'tire' "
-    "of percussion radius p = l²/(3h) = 2l/3 along the road y = -p: the point at distance p on "
-    "the far side traces a normal cycloid (cusps at rest), points inside it prolate and the "
-    "rod's ends curlate cycloids; the centre moves straight. Grey: the rod at t = 0, a quarter "
-    "and half a turn. The crosses mark the radius of gyration l/√3 = 0.577 l on the upright "
-    "rod, where h = p (the book prints 0.866). Lengths in units of the half-length l.",
+    (
+        "A free rod of length 2l struck at h = l/2 above its centre rolls on a 'tire' of "
+        "percussion radius p = l²/(3h) = 2l/3 along the road y = −p (lengths in units of l): "
+        "the point at p on the far side traces a normal cycloid, points inside it prolate and "
+        "the ends curlate ones; the centre moves straight. The crosses mark the radius of "
+        "gyration l/√3 = 0.577 l, where h = p (the book prints 0.866)."
+    ),
     (
         "ch11.percussion.hp-coefficient",
         "ch11.percussion.half-hit.radius",

@@ -32,11 +32,13 @@ if TYPE_CHECKING:
 @figure(
     "lagrange-estrangian-hamiltonian",
     "Figs. 12.1-12.2",
-    "The kinetic energy KE = 1 as an ellipse L(v) in velocities, a circle E(V) in quasi-velocities "
-    "V = sqrt(m) v and an ellipse H(p) in momenta, for the figure's mass ratio m1/m2 = 16 (read "
-    "from its collision slope -16). Solid: the collision line through the COM point, with the "
-    "slopes -16, -4, -1 the model gives; dashed: the COM bisector, slopes 1, 1/4, 1/16. Only in V "
-    "are the two perpendicular. Each H radius is m_k times its L radius.",
+    (
+        "The kinetic energy KE = 1 as an ellipse L(v) in velocities, a circle E(V) in "
+        "quasi-velocities Vₖ = √mₖ vₖ and an ellipse H(p) in momenta (scaled units), for the "
+        "figure's mass ratio m₁/m₂ = 16 (read from its collision slope −16): the collision line"
+        " through the COM point (red) and the COM bisector (dashed), perpendicular only in V. "
+        "Each H radius is mₖ times its L radius."
+    ),
     (
         "ch12.fig12-1.collision-slope",
         "ch12.fig12-1.velocity-bisector",
@@ -117,10 +119,13 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "legendre-tangent",
     "Figs. 12.3-12.4",
-    "Legendre contact geometry with the figure's numbers: a convex L(v) = v^1.6 has value 1.0 and "
-    "slope p = 1.6 at v = 1.0; its tangent there meets the L axis at -H = -0.6, and H(p), found "
-    "numerically as max_v (p v - L), has slope v = 1.0 at p = 1.6 and a tangent meeting the H "
-    "axis at -L = -1.0. Grey: secant lines of slope p with lower intercepts (Fig. 12.4a).",
+    (
+        "Legendre contact geometry with the figure's numbers (scaled units): (a) the convex "
+        "L(v) = v^1.6 has value 1 and slope p = 1.6 at v = 1, and its tangent there meets the L"
+        " axis at −H = −0.6 (grey: lines of that slope with lower intercepts, Fig. 12.4a); (b) "
+        "H(p) = max over v of (pv − L), found numerically, has slope v = 1 at p = 1.6 and a "
+        "tangent meeting the H axis at −L = −1."
+    ),
     (
         "ch12.fig12-3.h",
         "ch12.fig12-3.l-intercept",
@@ -167,11 +172,13 @@ def _legendre(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "fountain-envelope",
     "Figs. 12.5-12.6",
-    "The volcanoes of Io and the atomic fountain: trajectories of one speed v0 = 1 (g = 1, scaled) "
-    "at elevations every 7.5 degrees, each touching the dashed envelope "
-    "y = v0^2/(2g) - g x^2/(2 v0^2) once, at x = v0^2/(g tan a) (dots). The 45 degree path (red) "
-    "touches it at the ground; the horizontal one (green) has the envelope's shape and never "
-    "touches it.",
+    (
+        "The volcanoes of Io and the atomic fountain: trajectories of one speed v₀ = 1 (g = 1; "
+        "lengths in units of v₀²/g) at elevations every 7.5°, each touching the envelope y = "
+        "v₀²/(2g) − gx²/(2v₀²) once, at x = v₀²/(g tan a) (dots). The 45° paths (red) touch it "
+        "at the ground; the horizontal launch (green) has the envelope's shape and never "
+        "touches it."
+    ),
     (
         "ch12.fountain.envelope-constant-denominator",
         "ch12.fountain.envelope-denominator",
@@ -230,10 +237,13 @@ def _fountain(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "polar-bases",
     "Fig. 12.10",
-    "Polar coordinate grid with the covariant bases E_r, E_phi (columns of the Jacobian J, "
-    "tangent to the coordinate lines; E_phi grows with r) and the contravariant bases E^r, E^phi "
-    "(rows of K = J^-1, normal to the lines; E^phi shrinks as 1/r) at three points. Their dot "
-    "products give the metric diag(1, r^2) and its inverse diag(1, 1/r^2) (12.30).",
+    (
+        "The polar coordinate grid (scaled units) with the covariant bases Eᵣ, Eᵩ (columns of "
+        "the Jacobian J, tangent to the coordinate lines; Eᵩ grows with r) and the "
+        "contravariant bases Eʳ, Eᵠ (rows of K = J⁻¹, normal to the lines; Eᵠ shrinks as 1/r) "
+        "at three points; Eᵣ and Eʳ coincide. Their dot products give the metric diag(1, r²) "
+        "and its inverse diag(1, 1/r²) (12.30)."
+    ),
     (
         "ch12.polar.metric-rr",
         "ch12.polar.metric-rphi",
@@ -290,10 +300,12 @@ def _polar(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "oscillator-phase-colour",
     "Figs. 12.13-12.14",
-    "Phase-coloured action: paths of the 2-D oscillator (omega = M = 1) blasted from r(0) = (1,0) "
-    "with the starlet's speed |v(0)| = 1 in 72 directions (exercise 1.12.3), each coloured by its "
-    "reduced action S_H = integral p.dr in units of hbar = 1/8, modulo 2 pi, on the hue circle "
-    "of line 16324 (red 0, cyan pi). Over one period every path gathers S_H = 2 pi E = 2 pi.",
+    (
+        "Paths (scaled units) of the 2-D oscillator (ω = M = 1) blasted from r(0) = (1, 0) with"
+        " the starlet's speed |v(0)| = 1 in 72 directions (exercise 1.12.3), coloured by the "
+        "phase of their reduced action S_H = ∫p·dr in units of ħ = 1/8, modulo 2π (the hue "
+        "circle: red 0, cyan π). Over one period every path gathers S_H = 2πE = 2π."
+    ),
     ("ch12.starlet.speed", "ch12.bohr.phase-turn", "ch12.palette.orange", "ch12.palette.blue"),
 )
 def _phase(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:

@@ -17,9 +17,11 @@ if TYPE_CHECKING:
 @figure(
     "cross-product-areas",
     "Fig. 1.A.2",
-    "The parallelogram of A = (3, 1) and B = (1, 2) and its A+B and A-B triangles, in the "
-    "plane's (dimensionless) units. Their areas, found by Heron's formula from the side lengths "
-    "alone, are |A × B| = 5 and half of it: the 1/2 of 'Area = 1/2 base altitude = 1/2 |A × B|'.",
+    (
+        "The parallelogram of A = (3, 1) and B = (1, 2) and its A+B and A−B triangles "
+        "(dimensionless units), their areas found by Heron's formula from the side lengths "
+        "alone: |A × B| = 5 and half of it, the ½ of 'Area = ½ base altitude = ½ |A × B|'."
+    ),
     ("chA1.area.triangle",),
 )
 def _areas(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
