@@ -32,6 +32,7 @@ SMALLEST = 7.0  # pt, as shown on the page
 _SVG = "{http://www.w3.org/2000/svg}"
 _FIGURE = re.compile(r'<figure id="figure-([^"]+)">.*?(<svg.*?</svg>)', re.S)
 _SIZE = re.compile(r"font-size:\s*([\d.]+)px")
+_FAMILY = re.compile(r"font-family:\s*([^;\"]+)")
 _AXES = re.compile(r"-axes_\d+$")
 _AXIS = re.compile(r"-matplotlib\.axis_\d+$")
 _TEXT = re.compile(r"-text_\d+$")
@@ -97,6 +98,14 @@ def test_no_text_is_smaller_than_7_pt(figures: dict[str, str]) -> None:
     """Titles, labels, tick labels, legends and notes are at least 7 pt on the page."""
     small = {key: found for key, svg in figures.items() if (found := legibility(svg).small)}
     assert small == {}
+
+
+def test_every_text_falls_back_to_a_generic_font(figures: dict[str, str]) -> None:
+    """A mathtext glyph names DejaVu Sans alone: ``_svg`` adds sans-serif for a reader
+    without it (and there is no glyph from a font no reader has, like STIX's sizes)."""
+    families = {f for svg in figures.values() for f in _FAMILY.findall(svg)}
+    assert {f for f in families if not f.endswith(("sans-serif", "serif"))} == set()
+    assert not any("STIX" in f for f in families)
 
 
 def test_the_checks_catch_a_missing_label_and_a_small_text() -> None:

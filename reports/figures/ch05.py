@@ -203,8 +203,8 @@ def _clock(ax: Axes, m1: float, m2: float, start: tuple[float, float], n: int) -
     ax.set_aspect("equal")
     ax.set_xlim(-1.15 * radius, 1.15 * radius)
     ax.set_ylim(-1.15 * radius, 1.15 * radius)
-    ax.set_xlabel(r"$V_1 = v_1\sqrt{m_1}$ (scaled)")
-    ax.set_ylabel(r"$V_2 = v_2\sqrt{m_2}$ (scaled)")
+    ax.set_xlabel(r"$V_1 = v_1√m_1$ (scaled)")
+    ax.set_ylabel(r"$V_2 = v_2√m_2$ (scaled)")
     turn = math.degrees(rotation_angle(scaled_double_bang_matrix(m1, m2)))
     ax.set_title(
         f"(b) each double bang $CM$ turns {turn:.2f}°".replace("-", "\u2212"), fontsize="medium"
@@ -220,7 +220,7 @@ def _bang_triangle(ax: Axes, m1: float, m2: float) -> None:
     ax.plot([0, t.base, t.base, 0], [0, 0, t.altitude, 0], color="C0")
     labels = (
         (f"$m_1 - m_2 = {t.base:g}$", (t.base / 2, 0), (0, -14), "center", 0),
-        (rf"$2\sqrt{{m_1 m_2}} = {t.altitude:g}$", (t.base, t.altitude / 2), (4, 0), "left", 0),
+        (rf"$2√(m_1 m_2) = {t.altitude:g}$", (t.base, t.altitude / 2), (4, 0), "left", 0),
         (f"$m_1 + m_2 = {t.hypotenuse:g}$", (t.base / 2, t.altitude / 2), (-8, 8), "right", theta),
         (rf"$\theta = {theta:.2f}°$", (0, 0), (26, 1), "left", 0),
     )

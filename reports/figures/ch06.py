@@ -114,7 +114,7 @@ def _two_gas_oscillator(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.plot(times, [x0 * math.cos(omega * t) for t in times], "--", label="harmonic")
     ax.set_xlabel("time $t$ (s)")
     ax.set_ylabel("displacement $x$ (m)")
-    ax.set_title(f"harmonic period $2\\pi\\sqrt{{M/k}}$ = {period:.3g} s", fontsize="medium")
+    ax.set_title(f"harmonic period $2\\pi√(M/k)$ = {period:.3g} s", fontsize="medium")
     fig.legend(fontsize="small", loc="outside lower center", ncols=2)
 
 

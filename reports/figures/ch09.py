@@ -81,9 +81,7 @@ def _tunnel(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.set_aspect("equal")
     ax.set_xlabel("$x/R$")
     ax.set_ylabel("$y/R$")
-    ax.set_title(
-        f"period $2\\pi\\sqrt{{R/g}}$ = {period / 60:.1f} min on every chord", fontsize="medium"
-    )
+    ax.set_title(f"period $2\\pi√(R/g)$ = {period / 60:.1f} min on every chord", fontsize="medium")
     fig.legend(loc="outside lower center", fontsize="small", ncols=3)
 
 

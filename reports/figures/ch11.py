@@ -228,9 +228,7 @@ def _rod(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         )
     ax.axhline(-p / half, color="0.7", linewidth=1, linestyle="--", label="road $y = -p$")
     gyration = radius_of_gyration(length) / half
-    ax.plot(
-        [0, 0], [gyration, -gyration], "x", color="k", ms=7, label=r"gyration radius $l/\sqrt{3}$"
-    )
+    ax.plot([0, 0], [gyration, -gyration], "x", color="k", ms=7, label=r"gyration radius $l/√3$")
     ax.set_aspect("equal")
     ax.set_ylim(-1.25, 1.25)
     ax.set_xlabel("$x/l$")

@@ -65,7 +65,7 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         ),
         (
             "$E(V)$: quasi-velocities",
-            (r"$V_1 = \sqrt{m_1}\,v_1$ (scaled)", r"$V_2 = \sqrt{m_2}\,v_2$ (scaled)"),
+            (r"$V_1 = √m_1\,v_1$ (scaled)", r"$V_2 = √m_2\,v_2$ (scaled)"),
             [math.sqrt(2 * energy)] * 2,
             (math.sqrt(m1), math.sqrt(m2)),
             s.quasi_collision,
