@@ -332,7 +332,7 @@ def _phase(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.set_aspect("equal")
     ax.set_xlabel("$x$ (scaled)")
     ax.set_ylabel("$y$ (scaled)")
-    _hue_key(ax.inset_axes((0.74, 0.74, 0.25, 0.25)), cmap)
+    _hue_key(ax.inset_axes((0.75, 0.7, 0.24, 0.24)), cmap)
 
 
 def _hue_key(ax: Axes, cmap: Colormap) -> None:
