@@ -83,10 +83,13 @@ def figure(key: str, book_figure: str, caption: str, claims: tuple[str, ...]) ->
 _SVG_ID = re.compile(r'id="([^"]+)"')
 _SVG_REF = re.compile(r'(id="|url\(#|"#)([^")]+)(?=[")])')
 _METADATA = re.compile(r"<metadata>.*?</metadata>\s*", re.S)
+# a mathtext glyph names its one font, DejaVu Sans: a reader without it gets a sans-serif
+_ONE_FONT = re.compile(r"(font-family: '[^']+')(?=[;\"])")
 
 
 def _svg(fig: Figure, key: str) -> str:
-    """The figure as inline SVG: no date or RDF metadata, every id prefixed with ``key``."""
+    """The figure as inline SVG: no date or RDF metadata, every id prefixed with ``key``, a
+    generic sans-serif after a mathtext glyph's font."""
     import matplotlib
 
     buffer = io.StringIO()
@@ -94,6 +97,7 @@ def _svg(fig: Figure, key: str) -> str:
         fig.savefig(buffer, format="svg", metadata={"Date": None}, bbox_inches="tight", dpi=200)
     text = buffer.getvalue()
     text = _METADATA.sub("", text[text.index("<svg") :])
+    text = _ONE_FONT.sub(r"\1, sans-serif", text)
     # matplotlib names its elements axes_1, line2d_1, ... in every figure: make them unique,
     # in one pass over the text (ids and the url(#id) and href="#id" references to them)
     ids = set(_SVG_ID.findall(text))

@@ -46,27 +46,31 @@ def _slope_axes(ax: Axes, sx: float, sy: float, horizontal: str) -> None:
     ax.set_ylim(-SQUARES, SQUARES)
     ax.set_aspect("equal")
     ax.grid(color="0.88")
-    miles = [f"{k * sx:g}" if k % SQUARES == 0 else "" for k in ticks]
-    seconds = [f"{k * sy:g}" if k % 2 == 0 else "" for k in ticks]
+    # with a true minus sign, as matplotlib's own tick labels have
+    miles = [f"{k * sx:g}".replace("-", "\u2212") if k % SQUARES == 0 else "" for k in ticks]
+    seconds = [f"{k * sy:g}".replace("-", "\u2212") if k % 2 == 0 else "" for k in ticks]
     if horizontal == "x":
         ax.set_xticklabels(miles)
         ax.set_yticklabels(seconds)
-        ax.set_xlabel("x (mile)")
-        ax.set_ylabel("t (s)")
+        ax.set_xlabel("position $x$ (mile)")
+        ax.set_ylabel("time $t$ (s)")
     else:
         ax.set_xticklabels(seconds)
         ax.set_yticklabels(miles)
-        ax.set_xlabel("t (s)")
-        ax.set_ylabel("x (mile)")
+        ax.set_xlabel("time $t$ (s)")
+        ax.set_ylabel("position $x$ (mile)")
 
 
 @figure(
     "slope-plots",
     "Fig. 1.2",
-    "The jet (600 mph), SUV (60 mph) and VW (10 mph) lines on Minkowski's t-vs-x plot (a) and "
-    "Newton's x-vs-t plot (b), one graph square being 0.1 mile by 6 s, so that the SUV line is "
-    "the 1:1 diagonal of both. Each slope, in graph squares, is the model's s_x/(v s_y) in (a) "
-    "and v s_y/s_x in (b); the two plots are mirror images in that diagonal.",
+    (
+        "The jet (600 mph), SUV (60 mph) and VW (10 mph) as lines of time t (s) against "
+        "position x (mile) in Minkowski's plot (a) and of x against t in Newton's (b), one "
+        "graph square being 0.1 mile by 6 s so that the SUV line is the 1:1 diagonal of both. "
+        "The slopes, from the model, are in graph squares; the two plots are mirror images in "
+        "that diagonal."
+    ),
     (
         "ch01.plot.unit-speed-mph",
         "ch01.plot.suv-slope",
@@ -84,6 +88,8 @@ def _slope_plots(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         ("SUV", "ch01.crash.v-suv", "C0"),
         ("VW", "ch01.crash.v-vw", "C2"),
     )
+    fig.set_size_inches(9.2, 4.6)
+    fig.set_layout_engine("constrained", w_pad=0.1)
     left, right = fig.subplots(1, 2)
     for name, ident, colour in lines:
         v, mph = _si(claims, ident), value_of(claims, ident)
@@ -106,23 +112,23 @@ def _slope_plots(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             )
     _slope_axes(left, value_of(claims, "ch01.plot.sx"), value_of(claims, "ch01.plot.sy"), "x")
     _slope_axes(right, value_of(claims, "ch01.plot.sx"), value_of(claims, "ch01.plot.sy"), "t")
-    left.set_title("(a) Minkowski: slope Δt/Δx = 1/v", fontsize="small")
-    right.set_title("(b) Newton: slope Δx/Δt = v", fontsize="small")
+    left.set_title(r"(a) Minkowski: slope $\Delta t/\Delta x = 1/v$", fontsize="medium")
+    right.set_title(r"(b) Newton: slope $\Delta x/\Delta t = v$", fontsize="medium")
     fx = value_of(claims, "ch01.rescale.feet-per-mile")
     fy = value_of(claims, "ch01.rescale.seconds-per-minute")
     suv = newton_slope(_si(claims, "ch01.crash.v-suv"), sx, sy)
     right.text(
         0.97,
         0.03,
-        f"in ft vs s the SUV slope\nis (f_x/f_y)·{suv:.4g} = {rescaled_slope(suv, fx, fy):.4g}",
+        f"in ft vs s the SUV slope\nis $(f_x/f_y)\\cdot{suv:.4g}$"
+        f" = {rescaled_slope(suv, fx, fy):.4g}",
         transform=right.transAxes,
         ha="right",
         va="bottom",
-        fontsize="x-small",
+        fontsize="small",
         bbox={"facecolor": "white", "edgecolor": "0.8"},
     )
-    left.legend(loc="upper left", fontsize="x-small")
-    fig.tight_layout()
+    left.legend(loc="upper left", fontsize="small")
 
 
 def _circle_segments(ax: Axes, sigma: float) -> None:
@@ -133,12 +139,12 @@ def _circle_segments(ax: Axes, sigma: float) -> None:
     p = (seg.base, seg.altitude)
     drawn = (
         ("radius 1", (0, 0), p, "0.3", "-"),
-        (f"cos σ = {seg.base:.4f}", (0, 0), (seg.base, 0), "C0", "-"),
-        (f"sin σ = {seg.altitude:.4f}", (seg.base, 0), p, "C1", "-"),
-        (f"tan σ = {seg.tangent:.4f}", p, (seg.secant, 0), "C3", "-"),
-        (f"cot σ = {seg.cotangent:.4f}", p, (0, seg.cosecant), "C2", "-"),
-        (f"sec σ = {seg.secant:.4f}", (0, 0), (seg.secant, 0), "C4", ":"),
-        (f"csc σ = {seg.cosecant:.4f}", (0, 0), (0, seg.cosecant), "C5", ":"),
+        (rf"$\cos\sigma = {seg.base:.4f}$", (0, 0), (seg.base, 0), "C0", "-"),
+        (rf"$\sin\sigma = {seg.altitude:.4f}$", (seg.base, 0), p, "C1", "-"),
+        (rf"$\tan\sigma = {seg.tangent:.4f}$", p, (seg.secant, 0), "C3", "-"),
+        (rf"$\cot\sigma = {seg.cotangent:.4f}$", p, (0, seg.cosecant), "C2", "-"),
+        (rf"$\sec\sigma = {seg.secant:.4f}$", (0, 0), (seg.secant, 0), "C4", ":"),
+        (rf"$\csc\sigma = {seg.cosecant:.4f}$", (0, 0), (0, seg.cosecant), "C5", ":"),
     )
     for label, a, b, colour, style in drawn:
         ax.plot([a[0], b[0]], [a[1], b[1]], style, color=colour, lw=2, label=label)
@@ -146,8 +152,8 @@ def _circle_segments(ax: Axes, sigma: float) -> None:
     ax.set_aspect("equal")
     ax.set_xlim(*LIMITS)
     ax.set_ylim(*LIMITS)
-    ax.legend(loc="upper right", fontsize="x-small")
-    ax.set_title(f"(Fig. 1.4b) segments of σ = {sigma:g} rad", fontsize="small")
+    ax.legend(loc="upper right", fontsize="small")
+    ax.set_title(rf"(a) the segments of $\sigma = {sigma:g}$ rad", fontsize="medium")
 
 
 def _whirl(ax: Axes, sigma: float, terms: int) -> None:
@@ -172,14 +178,14 @@ def _whirl(ax: Axes, sigma: float, terms: int) -> None:
     ax.plot([c[0] for c in corners], [c[1] for c in corners], "-", color="k", lw=1.5)
     quarter = [(x, y) for x, y in zip(*ellipse_points(1.0, 1.0), strict=True) if x >= 0 <= y]
     ax.plot([q[0] for q in quarter], [q[1] for q in quarter], color="0.75", lw=0.8)
-    names = ["tan σ", "1", "cot σ", "cot²σ"]
+    names = [r"$\tan\sigma$", "1", r"$\cot\sigma$", r"$\cot^2\sigma$"]
     for k, name in enumerate(names):
         (x0, y0), (x1, y1) = corners[k], corners[k + 1]
         length = seq.lengths[k]
         ax.annotate(
             name if k == 1 else f"{name} = {length:.3f}",
             ((x0 + x1) / 2, (y0 + y1) / 2),
-            fontsize="x-small",
+            fontsize="small",
             ha="center",
             va="center",
             bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.85, "pad": 0.5},
@@ -188,17 +194,21 @@ def _whirl(ax: Axes, sigma: float, terms: int) -> None:
     left = corners[1][0] - 0.25  # the leftmost corner, the tangent point, just inside
     ax.set_xlim(left, left + LIMITS[1] - LIMITS[0])
     ax.set_ylim(*LIMITS)
-    ax.set_title(f"(Fig. 1.5b) ×cot σ = {seq.scale_factor:.4f} per quarter turn", fontsize="small")
+    ax.set_title(
+        rf"(b) $\times\cot\sigma = {seq.scale_factor:.4f}$ per quarter turn", fontsize="medium"
+    )
 
 
 @figure(
     "trig-segments-whirl",
     "Figs. 1.4b and 1.5b",
-    "Left: the trigonometric ratios of σ = 1 radian as segments of the unit circle (Fig. 1.4b). "
-    "Right: the whirling-rectangle side sequence tan σ, 1, cot σ, cot²σ, ... (Fig. 1.5b) from "
-    "the model, starting up the same tangent segment tan σ, whose slope angle is σ - π/2 = -σc: "
-    "each side is the last one turned a quarter turn clockwise and shrunk by cot σ. (The book "
-    "prints the slope angle as -1 radian and the caption's cot σ with two digits swapped.)",
+    (
+        "Left (Fig. 1.4b): the trigonometric ratios of σ = 1 rad as segments of the unit "
+        "circle. Right (Fig. 1.5b): whirling rectangles whose sides tan σ, 1, cot σ, cot²σ, … "
+        "each turn a quarter turn clockwise and shrink by cot σ, starting up the tangent "
+        "segment at the slope angle σ − π/2 = −σc; lengths in units of the radius. The book "
+        "prints that angle as −1 radian and the caption's cot σ with two digits swapped."
+    ),
     (
         "ch01.fig14.base",
         "ch01.fig14.altitude",
@@ -213,7 +223,11 @@ def _whirl(ax: Axes, sigma: float, terms: int) -> None:
 )
 def _trig_and_whirl(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     sigma = value_of(claims, "ch01.fig14.sigma")
+    fig.set_size_inches(9.6, 4.9)
+    fig.set_layout_engine("constrained", w_pad=0.1)
     left, right = fig.subplots(1, 2)
     _circle_segments(left, sigma)
     _whirl(right, value_of(claims, "ch01.whirl.sigma"), terms=7)
-    fig.tight_layout()
+    for ax in (left, right):
+        ax.set_xlabel("$x$ (radius 1)")
+        ax.set_ylabel("$y$ (radius 1)")

@@ -17,9 +17,12 @@ if TYPE_CHECKING:
 @figure(
     "energy-ellipses",
     "Fig. 3.1",
-    "The SUV/VW crash in the (V_SUV, V_VW) plane: the elastic KE ellipse through the initial "
-    "point, the inelastic IE ellipse through the COM point, and the momentum line that both "
-    "collisions stay on.",
+    (
+        "The crash of the 4-ton SUV at 60 mph into the 1-ton VW at 10 mph in the plane of their"
+        " velocities (mph): the elastic KE ellipse through the initial point IN, the inelastic "
+        "IE ellipse through the COM point, and the momentum line both collisions stay on; "
+        "energies in ton·mph²."
+    ),
     ("ch03.suv-vw.ke", "ch03.suv-vw.ie"),
 )
 def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -27,6 +30,8 @@ def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     v_suv, v_vw = value_of(claims, "ch03.suv-vw.v-suv"), value_of(claims, "ch03.suv-vw.v-vw")
     elastic = collide(m_suv, m_vw, v_suv, v_vw, 1)
     sticking = collide(m_suv, m_vw, v_suv, v_vw, 0)
+    fig.set_size_inches(5.8, 6.2)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     for energy, style, label in (
         (kinetic_energy((m_suv, m_vw), (v_suv, v_vw)), "-", "KE ellipse"),
@@ -34,7 +39,7 @@ def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ):
         # 1/2 M x^2 + 1/2 m y^2 = E has semi-axes sqrt(2E/M) and sqrt(2E/m)
         xs, ys = ellipse_points(math.sqrt(2 * energy / m_suv), math.sqrt(2 * energy / m_vw))
-        ax.plot(xs, ys, style, label=f"{label} (E = {energy:g})")
+        ax.plot(xs, ys, style, label=f"{label}, $E$ = {energy:g}")
     p = elastic.momentum
     line_x = [-20.0, 100.0]
     ax.plot(line_x, [(p - m_suv * x) / m_vw for x in line_x], ":", label="momentum line")
@@ -45,9 +50,9 @@ def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ):
         ax.plot([x], [y], "o")
         ax.annotate(f"{name} ({x:g}, {y:g})", (x, y), textcoords="offset points", xytext=(5, 5))
-    ax.set_xlabel("V_SUV")
-    ax.set_ylabel("V_VW")
+    ax.set_xlabel(r"velocity $V_{\rm SUV}$ (mph)")
+    ax.set_ylabel(r"velocity $V_{\rm VW}$ (mph)")
     ax.set_aspect("equal")
     ax.set_xlim(-70, 110)
     ax.set_ylim(-130, 130)
-    ax.legend(loc="lower left", fontsize="small")
+    fig.legend(loc="outside lower center", fontsize="small", ncols=3)

@@ -59,21 +59,37 @@ def _vv_axes(ax: Axes, lim: float = 3.2) -> None:
     ax.set_xlim(-lim, lim)
     ax.set_ylim(-lim, lim)
     ax.set_aspect("equal")
-    ax.set_xlabel("V1 (ball M1)")
-    ax.set_ylabel("V2 (ball M2)")
+    ax.set_xlabel("velocity $V_1$ of $M_1$ (scaled)")
+    ax.set_ylabel("velocity $V_2$ of $M_2$ (scaled)")
 
 
 def _point(ax: Axes, p: tuple[float, float], text: str, offset: tuple[int, int]) -> None:
     ax.plot(*p, "o", color="k", markersize=4)
-    ax.annotate(text, p, textcoords="offset points", xytext=offset, fontsize="x-small")
+    ax.annotate(text, p, textcoords="offset points", xytext=offset, fontsize="small")
+
+
+def _signed(x: float) -> str:
+    """x with its sign (none for 0), a true minus for a negative one."""
+    return "0" if x == 0 else f"{x:+g}".replace("-", "\u2212")
+
+
+def _two_panels(fig: Figure, height: float = 4.8) -> tuple[Axes, Axes]:
+    """Two square velocity or position panels side by side, at the page's width."""
+    fig.set_size_inches(9.6, height)
+    fig.set_layout_engine("constrained", w_pad=0.1)
+    left, right = fig.subplots(1, 2)
+    return left, right
 
 
 @figure(
     "x2-two-bangs",
     "Fig. 4.4",
-    "The two bangs of the X2 launcher (M1:M2 = 7:1, both dropped at unit speed) in the "
-    "(V1, V2) plane: (a) Bang-1(01), M1 off the floor, a horizontal jump; (b) Bang-2(12), M1 "
-    "hits M2, along the momentum line of slope -M1/M2. Both stay on the energy ellipse.",
+    (
+        "The two bangs of the X2 launcher (M₁:M₂ = 7:1, both dropped at unit speed) in the "
+        "plane of the velocities (V₁, V₂), in units of the drop speed: (a) Bang-1(01), M₁ off "
+        "the floor, a horizontal jump; (b) Bang-2(12), M₁ hits M₂, along the bang line of slope"
+        " −M₁/M₂. Both stay on the energy ellipse."
+    ),
     (
         "ch04.history.bang1.v1",
         "ch04.history.bang1.v2",
@@ -88,30 +104,34 @@ def _two_bangs(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     one, two = ((e.v1, e.v2) for e in h.bangs)
     slope = bang_line_slope(value_of(claims, "ch04.x2.m1"), value_of(claims, "ch04.x2.m2"))
     for ax, (a, b), name in zip(
-        fig.subplots(1, 2),
+        _two_panels(fig),
         ((start, one), (one, two)),
-        ("(a) Bang-1(01)", "(b) Bang-2(12)"),
+        ("(a) Bang-1(01): $M_1$ off the floor", "(b) Bang-2(12): $M_1$ hits $M_2$"),
         strict=True,
     ):
         _ellipse(ax, claims, "energy ellipse")
         ax.annotate("", b, a, arrowprops={"arrowstyle": "->", "color": "C3", "lw": 1.5})
-        _point(ax, a, f"INIT ({a[0]:+g}, {a[1]:+g})", (-20, -14))
-        _point(ax, b, f"FINAL ({b[0]:+g}, {b[1]:+g})", (6, 4))
+        _point(ax, a, f"INIT ({_signed(a[0])}, {_signed(a[1])})", (-24, -16))
+        _point(ax, b, f"FINAL ({_signed(b[0])}, {_signed(b[1])})", (6, 4))
         _vv_axes(ax)
-        ax.set_title(name, fontsize="small")
-    ax.text(0.03, 0.03, f"slope {slope:g}", transform=ax.transAxes, fontsize="x-small", color="C3")
-    ax.legend(loc="upper left", fontsize="x-small")
-    fig.tight_layout()
+        ax.set_title(name, fontsize="medium")
+    ax.text(
+        0.03, 0.03, f"bang line, slope {_signed(slope)}", transform=ax.transAxes, fontsize="small"
+    )
+    ax.legend(loc="upper left", fontsize="small")
 
 
 @figure(
     "x2-final-locus",
     "Fig. 4.5",
-    "(a) Final (V1, V2) of the X2 launch for mass ratios M1/M2 from 1/64 to 1024 (line) and "
-    "for infinite M1/M2 (point I): all lie on the 45° line CPL. (b) The bang lines from INIT "
-    "(+1, -1) to the points U (ratio 1), M (the ratio that stops M1: all energy to M2), the "
-    "7:1 superball and pen, and I; and the U line Galileo-boosted by -1 (the pool shot) and "
-    "at half that speed.",
+    (
+        "(a) The final velocities (V₁, V₂) of the X2 launch for mass ratios M₁/M₂ from 1/64 to "
+        "1024 (line) and for an infinite one (point I): all lie on the 45° line CPL. (b) The "
+        "bang lines from INIT (+1, −1) to the points U (ratio 1), M (the ratio that stops M₁, "
+        "all energy to M₂), the 7:1 superball and pen, and I; dashed and dotted: the U line "
+        "Galileo-boosted by −1 (the pool shot) and by half that. Velocities in units of the "
+        "drop speed."
+    ),
     (
         "ch04.x2.final-locus-angle",
         "ch04.x2.inf.speed-ratio",
@@ -127,24 +147,24 @@ def _two_bangs(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 )
 def _final_locus(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     v0 = -value_of(claims, "ch04.history.v1")  # the drop speed
-    left, right = fig.subplots(1, 2)
+    left, right = _two_panels(fig)
     ratios = [2 ** (k / 4) for k in range(-24, 41)]
     finals = [x2_launch(r, 1, v0) for r in ratios]
     left.plot([f.v1 for f in finals], [f.v2 for f in finals], color="C0", lw=2, label="CPL")
     for r in (Fraction(1, 4), 1, 4, 16):
         f = x2_launch(r, 1, v0)
-        _point(left, (f.v1, f.v2), f"M1/M2 = {r}", (6, -8))
+        _point(left, (f.v1, f.v2), f"$M_1/M_2 = {r}$", (7, -9))
     inf = x2_infinite_ratio_launch(v0)
-    _point(left, (inf.v1, inf.v2), f"I: V2 = {inf.speed_ratio:g} V0", (-78, -2))
+    _point(left, (inf.v1, inf.v2), f"I: $V_2 = {inf.speed_ratio:g}\\,V_0$", (-86, -3))
     named = (
-        ("U", value_of(claims, "ch04.x2.u-point.ratio"), (-12, 6)),
-        ("M", x2_full_transfer_ratio(v0), (-52, -2)),
-        ("7:1", value_of(claims, "ch04.x2.mass-ratio"), (-64, -2)),
+        ("U", value_of(claims, "ch04.x2.u-point.ratio"), (-14, 7)),
+        ("M", x2_full_transfer_ratio(v0), (-58, -3)),
+        ("7:1", value_of(claims, "ch04.x2.mass-ratio"), (-76, -3)),
     )
     for name, r, offset in named:
         f = x2_launch(r, 1, v0)
         right.plot([f.start[0], f.v1], [f.start[1], f.v2], "-", lw=1)
-        _point(right, (f.v1, f.v2), f"{name} ({f.v1:.2g}, {f.v2:.2g})", offset)
+        _point(right, (f.v1, f.v2), f"{name} ({_signed(f.v1)}, {_signed(f.v2)})", offset)
     right.plot([inf.start[0], inf.v1], [inf.start[1], inf.v2], "-", lw=1)
     _point(right, (inf.v1, inf.v2), "I", (6, -4))
     _point(right, inf.start, "INIT", (4, -12))
@@ -153,21 +173,22 @@ def _final_locus(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     for scale, style in ((1, "--"), (Fraction(1, 2), ":")):
         shot = galileo_shifted_collision(u, 1, v0, -v0, boost, scale)
         right.annotate("", shot.after, shot.before, arrowprops={"arrowstyle": "->", "ls": style})
-    right.text(-2.9, -2.4, "pool shots\n(U boosted)", fontsize="x-small")
+    right.text(-3.2, -2.6, "pool shots\n(U boosted)", fontsize="small")
     for ax, title in ((left, "(a) final point locus"), (right, "(b) points I, M, U")):
         _vv_axes(ax, lim=3.4)
-        ax.set_title(title, fontsize="small")
-    left.legend(loc="lower right", fontsize="x-small")
-    fig.tight_layout()
+        ax.set_title(title, fontsize="medium")
+    left.legend(loc="lower right", fontsize="small")
 
 
 @figure(
     "bang-history-7-1",
     "Figs. 4.6-4.8",
-    "Space-time history of the 7:1 pair (M1 from height 1, M2 from 3, both falling at unit "
-    "speed; floor at 0, elastic ceiling at 7) from the event simulator, to Bang-9: heights "
-    "against time, each bang numbered and labelled by its kind (01 floor, 12 ball-ball, 02 "
-    "ceiling). The cross is the book's y2(2) = 3 at Bang-2, where the paths in fact meet.",
+    (
+        "Heights against time of the 7:1 pair from the event simulator (M₁ from height 1, M₂ "
+        "from 3, both falling at unit speed; floor at 0, elastic ceiling at 7; scaled units) to"
+        " Bang-9, each bang numbered with its kind (01 floor, 12 ball-ball, 02 ceiling). The "
+        "cross is the book's y₂(2) = 3 at Bang-2, where the paths in fact meet."
+    ),
     (
         "ch04.history.bang1.time",
         "ch04.history.bang2.time",
@@ -186,45 +207,49 @@ def _space_time(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     end = h.bangs[-1].time * 1.06
     times = [0, *(e.time for e in h.bangs), end]
     paths = [h.positions_at(t) for t in times]
+    fig.set_size_inches(9.0, 4.6)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     ceiling = value_of(claims, "ch04.history.ceiling")
     ax.axhline(0, color="0.3", lw=3, label="floor")
     ax.axhline(ceiling, color="0.6", lw=3, label="ceiling")
-    ax.plot(times, [p[0] for p in paths], "-", color="C0", label="y1 (M1 = 7)")
-    ax.plot(times, [p[1] for p in paths], "-", color="C1", label="y2 (M2 = 1)")
-    offsets = {"01": (-8, -12), "12": (5, -4), "02": (-8, 5)}  # floor: below, ceiling: above
+    ax.plot(times, [p[0] for p in paths], "-", color="C0", label="$y_1$ of $M_1 = 7$")
+    ax.plot(times, [p[1] for p in paths], "-", color="C1", label="$y_2$ of $M_2 = 1$")
+    offsets = {"01": (-10, -13), "12": (6, -5), "02": (-10, 5)}  # floor: below, ceiling: above
     for e in h.bangs:
         ax.annotate(
             f"{e.number}({e.kind})",
             (e.time, e.y2 if e.kind == "02" else e.y1),
             textcoords="offset points",
             xytext=offsets[e.kind],
-            fontsize="x-small",
+            fontsize="small",
         )
     two = h.bangs[1]
     ax.plot([two.time], [value_of(claims, "ch04.history.bang2.y2")], "x", color="C3", ms=7)
     ax.annotate(
-        "book: y2(2) = 3",
+        "book: $y_2(2) = 3$",
         (two.time, value_of(claims, "ch04.history.bang2.y2")),
         textcoords="offset points",
         xytext=(6, 2),
-        fontsize="x-small",
+        fontsize="small",
         color="C3",
     )
-    ax.set_xlabel("time t")
-    ax.set_ylabel("height y")
-    ax.set_ylim(-0.7, ceiling + 1.9)
-    ax.legend(loc="upper right", fontsize="x-small", ncols=4)
+    ax.set_xlabel("time $t$ (scaled)")
+    ax.set_ylabel("height $y$ (scaled)")
+    ax.set_ylim(-0.8, ceiling + 1.9)
+    ax.legend(loc="upper right", fontsize="small", ncols=4)
 
 
 @figure(
     "energy-ellipse-7-1",
     "Fig. 4.9",
-    "The 7:1 history in the (V1, V2) plane: every bang is a jump between two points of the "
-    "energy ellipse 7 V1² + V2² = 8 (horizontal off the floor, vertical off the ceiling, slope "
-    "-7 between the balls), after 15 and after 150 bangs. The minor semi-axis, along V1, is "
-    "a = sqrt(2 KE/M1) = sqrt(8/7) and the major one b = sqrt(8): the book prints the two "
-    "values the other way round.",
+    (
+        "The 7:1 history in the plane of the velocities (V₁, V₂), in units of the drop speed, "
+        "after 15 (a) and 150 (b) bangs: every bang jumps between two points of the energy "
+        "ellipse 7V₁² + V₂² = 8 (horizontally off the floor, vertically off the ceiling, at "
+        "slope −7 between the balls). Its semi-axes are a = √(2 KE/M₁) = √(8/7) along V₁ and b "
+        "= √8: the book prints the two values the other way round."
+    ),
     (
         "ch04.ellipse.twice-energy",
         "ch04.ellipse.minor",
@@ -238,43 +263,46 @@ def _ellipse_fill(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         value_of(claims, "ch04.history.v1"),
         value_of(claims, "ch04.history.v2"),
     )
-    for ax, bangs in zip(fig.subplots(1, 2), FIG_4_9_BANGS, strict=True):
+    panels = _two_panels(fig)
+    fig.set_size_inches(7.2, 5.6)
+    for k, (ax, bangs) in enumerate(zip(panels, FIG_4_9_BANGS, strict=True)):
         h = _history(claims, bangs)
         states = [h.start[2:], *((b.v1, b.v2) for b in h.bangs)]
         ax.plot(*ellipse_points(e.radius_v1, e.radius_v2), color="0.7")
         width = 0.8 if bangs < 50 else 0.3
         ax.plot([s[0] for s in states], [s[1] for s in states], "-", lw=width, color="C0")
         _vv_axes(ax, lim=3.2)
-        ax.set_title(f"to Bang-{bangs}", fontsize="small")
+        ax.set_xlim(-1.9, 1.9)  # the ellipse is tall and narrow
+        ax.set_title(f"({'ab'[k]}) to Bang-{bangs}", fontsize="medium")
     ax.annotate(
-        f"a = {e.radius_v1:.4g}",
+        f"$a$ = {e.radius_v1:.4g}",
         (e.radius_v1, 0),
         textcoords="offset points",
-        xytext=(2, 4),
-        fontsize="x-small",
+        xytext=(3, 4),
+        fontsize="small",
         color="C3",
     )
     ax.annotate(
-        f"b = {e.radius_v2:.4g}",
+        f"$b$ = {e.radius_v2:.4g}",
         (0, e.radius_v2),
         textcoords="offset points",
-        xytext=(4, 2),
-        fontsize="x-small",
+        xytext=(5, 2),
+        fontsize="small",
         color="C3",
     )
-    fig.tight_layout()
 
 
 @figure(
     "space-space-7-1",
     "Figs. 4.11-4.12",
-    "The 7:1 history as one billiard ball: left, the velocity vectors v(n) = (V1, V2) after "
-    "each bang on the energy ellipse; right, the position y(n) = (y1, y2) bouncing inside the "
-    "triangle of floor (y1 = 0), ceiling (y2 = 7) and the 45° collision line y2 = y1, each "
-    "segment along the v(n) drawn from y(n). At Bang-2 on the collision line: the line of "
-    "slope -M1/M2, along which the velocity jumps (v(2) - v(1)), and its perpendicular facet of "
-    "slope M2/M1. The book calls the first the bisector of the incident and reflected paths; "
-    "that holds only for equal masses: the true bisector (grey) is drawn too.",
+    (
+        "The 7:1 history as one billiard ball, in scaled units: (a) the velocities v(n) = (V₁, "
+        "V₂) after each bang, on the energy ellipse; (b) the positions y(n) = (y₁, y₂) bouncing"
+        " inside the triangle of floor, ceiling and collision line y₂ = y₁, each step along "
+        "v(n). At Bang-2: the bang line of slope −M₁/M₂ and its perpendicular facet. The book "
+        "calls the bang line the bisector of the incident and reflected paths, which holds only"
+        " for equal masses; the true bisector is grey."
+    ),
     (
         "ch04.history.bang1.y1",
         "ch04.history.bang1.y2",
@@ -289,19 +317,19 @@ def _ellipse_fill(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 def _space_space(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     last = int(value_of(claims, "ch04.history.bang6.number"))
     h = _history(claims, last)
-    left, right = fig.subplots(1, 2)
+    left, right = _two_panels(fig, 5.0)
     _ellipse(left, claims)
     velocities = [h.start[2:], *((e.v1, e.v2) for e in h.bangs)]
     for n, v in enumerate(velocities):
         left.annotate("", v, (0, 0), arrowprops={"arrowstyle": "->", "color": f"C{n}"})
-        left.annotate(f"v({n})", v, textcoords="offset points", xytext=(3, 3), fontsize="x-small")
+        left.annotate(f"$v({n})$", v, textcoords="offset points", xytext=(3, 3), fontsize="small")
     _vv_axes(left)
-    left.set_title("velocity space", fontsize="small")
+    left.set_title("(a) velocity space", fontsize="medium")
     ceiling = value_of(claims, "ch04.history.ceiling")
     right.fill([0, 0, ceiling], [0, ceiling, ceiling], color="0.95", edgecolor="0.4")
     points = [h.start[:2], *((e.y1, e.y2) for e in h.bangs)]
     kinds = ["start", *(e.kind for e in h.bangs)]
-    offsets = {"start": (4, -4), "01": (4, -4), "12": (6, -8), "02": (-22, 4)}
+    offsets = {"start": (4, -4), "01": (4, -4), "12": (6, -9), "02": (-26, 4)}
     for n, (point, kind) in enumerate(zip(points, kinds, strict=True)):
         if n + 1 < len(points):
             right.annotate(
@@ -311,7 +339,7 @@ def _space_space(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         if kind == "02":
             offsets["02"] = (4, 4)  # the next ceiling label goes to the right
         right.annotate(
-            f"y({n})", point, textcoords="offset points", xytext=(dx, dy), fontsize="x-small"
+            f"$y({n})$", point, textcoords="offset points", xytext=(dx, dy), fontsize="small"
         )
     m1, m2 = value_of(claims, "ch04.history.m1"), value_of(claims, "ch04.history.m2")
     (a1, a2), (b1, b2) = velocities[1], velocities[2]  # incident and reflected at Bang-2
@@ -320,17 +348,16 @@ def _space_space(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     )
     x, y = points[2]
     for slope, style, colour, name in (
-        (bang_line_slope(m1, m2), "--", "k", "slope -M1/M2"),
-        (bang_facet_slope(m1, m2), ":", "k", "facet M2/M1"),
-        (bisector, "-", "0.6", f"bisector, slope {bisector:.2g}"),
+        (bang_line_slope(m1, m2), "--", "k", "bang line, slope $-M_1/M_2$"),
+        (bang_facet_slope(m1, m2), ":", "k", "facet, slope $M_2/M_1$"),
+        (bisector, "-", "0.6", f"bisector, slope {_signed(float(f'{bisector:.2g}'))}"),
     ):
         d = 0.9 / math.hypot(1, slope)
         right.plot([x - d, x + d], [y - slope * d, y + slope * d], style, color=colour, label=name)
     right.set_aspect("equal")
     right.set_xlim(-0.5, ceiling + 0.5)
     right.set_ylim(-0.5, ceiling + 0.8)
-    right.set_xlabel("y1 (M1)")
-    right.set_ylabel("y2 (M2)")
-    right.set_title("space-space (y2 vs y1)", fontsize="small")
-    right.legend(loc="lower right", fontsize="x-small")
-    fig.tight_layout()
+    right.set_xlabel("height $y_1$ of $M_1$ (scaled)")
+    right.set_ylabel("height $y_2$ of $M_2$ (scaled)")
+    right.set_title("(b) space-space: $y_2$ against $y_1$", fontsize="medium")
+    right.legend(loc="lower right", fontsize="small")

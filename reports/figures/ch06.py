@@ -30,29 +30,35 @@ RELEASE_FRACTION = 1 / 3
 @figure(
     "force-laws",
     "Fig. 6.1, (6.4)-(6.11)",
-    "Bang-force laws on the big ball at gap Y (a tiny ball of unit mass, unit speed at Y = 1): "
-    "isothermal F = m2 v2^2 / Y and adiabatic F = m2 (v0 Y0)^2 / Y^3 (left), and their "
-    "potentials -m2 v2^2 ln Y and 1/2 m2 (v0 Y0 / Y)^2 (right).",
+    (
+        "Bang-force laws on the big ball at gap Y, for a tiny ball of unit mass at unit speed "
+        "at Y = 1 (scaled units): (a) the isothermal force F = m₂v₂²/Y and the adiabatic F = "
+        "m₂(v₀Y₀)²/Y³; (b) their potentials −m₂v₂² ln Y and ½m₂(v₀Y₀/Y)²."
+    ),
     ("ch06.isothermal.inverse-power", "ch06.adiabatic.inverse-power"),
 )
 def _force_laws(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     gaps = [0.3 + 0.02 * k for k in range(136)]
     iso = [isothermal_force(1, 1, y).force for y in gaps]
     adi = [adiabatic_force(1, 1, 1, y).force for y in gaps]
+    fig.set_size_inches(9.0, 4.0)
+    fig.set_layout_engine("constrained", w_pad=0.1)
     left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
     n_iso = value_of(claims, "ch06.isothermal.inverse-power")
     n_adi = value_of(claims, "ch06.adiabatic.inverse-power")
-    left.plot(gaps, iso, label=f"isothermal ~ 1/Y^{n_iso:g}")
-    left.plot(gaps, adi, label=f"adiabatic ~ 1/Y^{n_adi:g}")
+    left.plot(gaps, iso, label=f"isothermal $\\propto 1/Y^{{{n_iso:g}}}$")
+    left.plot(gaps, adi, label=f"adiabatic $\\propto 1/Y^{{{n_adi:g}}}$")
     left.set_ylim(0, 8)
-    left.set_xlabel("gap Y")
-    left.set_ylabel("force F on m1")
+    left.set_xlabel("gap $Y$ (scaled)")
+    left.set_ylabel("force $F$ on $m_1$ (scaled)")
+    left.set_title("(a) force", fontsize="medium")
     left.legend(fontsize="small")
-    right.plot(gaps, [isothermal_potential(1, 1, y) for y in gaps], label="-ln Y")
-    right.plot(gaps, [adiabatic_potential(1, 1, 1, y) for y in gaps], label="1/(2 Y^2)")
+    right.plot(gaps, [isothermal_potential(1, 1, y) for y in gaps], label=r"isothermal $-\ln Y$")
+    right.plot(gaps, [adiabatic_potential(1, 1, 1, y) for y in gaps], label=r"adiabatic $1/(2Y^2)$")
     right.set_ylim(-1.5, 4)
-    right.set_xlabel("gap Y")
-    right.set_ylabel("potential U(Y)")
+    right.set_xlabel("gap $Y$ (scaled)")
+    right.set_ylabel("potential $U(Y)$ (scaled)")
+    right.set_title("(b) potential", fontsize="medium")
     right.legend(fontsize="small")
 
 
@@ -64,9 +70,12 @@ def _two_gas_force(big_m: float, m: float, v0: float, y0: float, x: float) -> fl
 @figure(
     "two-gas-oscillator",
     "Fig. 6.3(c)",
-    "Quasi-harmonic oscillation of M = 50 between two adiabatic gases of m = 0.1 at v0 = 20 "
-    "in ranges Y0 = 3, released at rest a third of the way to one wall (our choice: the book "
-    "gives no start). Dashed: the harmonic motion with the spring constant at x = 0.",
+    (
+        "Displacement against time of M = 50 kg oscillating between two adiabatic gases of m = "
+        "0.1 kg at v₀ = 20 m/s in ranges Y₀ = 3 m, released at rest a third of the way to one "
+        "wall (our choice: the book gives no start). Dashed: the harmonic motion with the "
+        "spring constant at x = 0."
+    ),
     (
         "ch06.fig6-3c.big-mass",
         "ch06.fig6-3c.small-mass",
@@ -98,27 +107,33 @@ def _two_gas_oscillator(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         rtol=1e-10,
         atol=1e-12,
     )
+    fig.set_size_inches(8.0, 4.2)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    ax.plot(run.t, run.y[0], label="adiabatic gases")
+    ax.plot(run.t, run.y[0], label="between the adiabatic gases")
     ax.plot(times, [x0 * math.cos(omega * t) for t in times], "--", label="harmonic")
-    ax.set_xlabel("time t (s)")
-    ax.set_ylabel("displacement x (m)")
-    ax.set_title(f"harmonic period 2 pi sqrt(M/k) = {period:.3g} s", fontsize="small")
-    ax.legend(fontsize="small")
+    ax.set_xlabel("time $t$ (s)")
+    ax.set_ylabel("displacement $x$ (m)")
+    ax.set_title(f"harmonic period $2\\pi√(M/k)$ = {period:.3g} s", fontsize="medium")
+    fig.legend(fontsize="small", loc="outside lower center", ncols=2)
 
 
 @figure(
     "trapped-ball",
     "Fig. 6.4(a)",
-    "The little ball trapped between the big ball closing at v1 = 1 and the wall at x = 0, "
-    "starting at rest 3 units out: space-time paths (x across, t up); the range times the "
-    "speed at each wall bang stays 3.",
+    (
+        "Space-time paths (scaled units) of the little ball trapped between the big ball "
+        "closing at v₁ = 1 and the wall at x = 0, starting at rest 3 units out: the range times"
+        " the speed at each wall bang stays 3."
+    ),
     ("ch06.trapped.after-bang-1", "ch06.trapped.action"),
 )
 def _trapped_ball(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     v_wall = value_of(claims, "ch06.trapped.v-wall")
     v_ball = value_of(claims, "ch06.trapped.v-ball")
     run = trapped_ball(v_wall, v_ball, TRAPPED_GAP, 6)
+    fig.set_size_inches(7.6, 4.8)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     # the little ball: from the big ball to the wall and back, bang after bang
     xs, ts = [-TRAPPED_GAP], [0.0]
@@ -129,19 +144,30 @@ def _trapped_ball(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         meet = wall_time + (TRAPPED_GAP - v_wall * wall_time) / (speed + v_wall)
         xs.append(-speed * (meet - wall_time))
         ts.append(meet)
-    ax.plot(xs, ts, "-o", markersize=3, label="little ball m2")
+    ax.plot(xs, ts, "-o", markersize=3, label="little ball $m_2$")
     t_end = ts[-1]
-    ax.plot([-TRAPPED_GAP, -TRAPPED_GAP + v_wall * t_end], [0, t_end], label="big ball (v1 = 1)")
+    ax.plot(
+        [-TRAPPED_GAP, -TRAPPED_GAP + v_wall * t_end],
+        [0, t_end],
+        label=f"big ball, $v_1 = {v_wall:g}$",
+    )
     ax.axvline(0, color="k", label="wall")
-    for rng, wall_time, prod in zip(run.ranges, run.times, run.products, strict=True):
-        ax.plot([-rng, 0], [wall_time, wall_time], ":", color="0.5")
-        ax.annotate(
-            f"{prod:.2g}",
-            (-rng, wall_time),
-            fontsize="x-small",
-            xytext=(-18, 0),
-            textcoords="offset points",
+    for k, (rng, wall_time, prod) in enumerate(
+        zip(run.ranges, run.times, run.products, strict=True)
+    ):
+        ax.plot(
+            [-rng, 0], [wall_time, wall_time], ":", color="0.5", label="range" if k == 0 else None
         )
-    ax.set_xlabel("position x")
-    ax.set_ylabel("time t")
+        if k < 3:  # the later ones crowd together near the wall
+            ax.annotate(
+                f"range × speed = {prod:.2g}",
+                (-rng, wall_time),
+                fontsize="small",
+                xytext=(-6, 0),
+                textcoords="offset points",
+                ha="right",
+                va="center",
+            )
+    ax.set_xlabel("position $x$ (scaled)")
+    ax.set_ylabel("time $t$ (scaled)")
     ax.legend(fontsize="small", loc="upper left")

@@ -35,37 +35,46 @@ def _soft_pair(ax: Axes, power: float, title: str) -> tuple[float, float]:
     # and draw a little free flight after the contact ends
     size = 1.5 * max(max(-x for x in run.positions[0]), *_squeezes(run.positions))
     t_end = run.duration * 1.6
-    for k, (label, row) in enumerate(zip(("m1 = 7", "m2 = 1"), run.positions, strict=True)):
+    for k, row in enumerate(run.positions):
         times = [*run.times, t_end]
         heights = [*row, row[-1] + finals[k] * (t_end - run.times[-1])]
-        ax.plot(times, [h + k * size for h in heights], label=f"{label}: V = {finals[k]:.3g}")
+        ax.plot(
+            times,
+            [h + k * size for h in heights],
+            label=f"$m_{k + 1} = {PAIR[k]:g}$: leaves at $V_{k + 1}$ = {finals[k]:.3g}",
+        )
     ax.axhline(0, color="k", linewidth=0.8)
-    ax.set_xlabel("time (contact-time units)")
-    ax.set_ylabel("bottom of each ball (floor at 0)")
-    ax.set_title(title, fontsize="small")
-    ax.legend(fontsize="x-small")
+    ax.set_xlabel("time $t$ (contact-time units)")
+    ax.set_ylabel("height of each ball's bottom (scaled)")
+    ax.set_title(title, fontsize="medium")
+    ax.legend(fontsize="small", loc="lower right")
     return finals
 
 
 @figure(
     "soft-pair-quartic",
     "Fig. 7.6",
-    "CrapCorp's zero-gap simulation: the 7:1 pair of Fig. 4.4 dropped at speed 1 onto the floor "
-    "with quartic contact forces F = k y^4 (floor and ball-ball alike, no gravity during the "
-    "contact). RumpCo's independent bangs give 0.5 and 2.5.",
+    (
+        "CrapCorp's zero-gap simulation: the 7:1 pair of Fig. 4.4 dropped at speed 1 onto the "
+        "floor with quartic contact forces F = ky⁴ (floor and ball-ball alike, no gravity "
+        "during the contact); heights of the balls' bottoms in scaled units. RumpCo's "
+        "independent bangs give 0.5 and 2.5."
+    ),
     ("ch07.crapcorp.v1", "ch07.crapcorp.v2", "ch07.rumpco.v1", "ch07.rumpco.v2"),
 )
 def _soft_pair_quartic(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     power = value_of(claims, "ch07.superball-force.power")
+    fig.set_size_inches(7.6, 4.4)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    _soft_pair(ax, power, f"quartic force, power {power:g}")
+    _soft_pair(ax, power, f"quartic force $F = k\\,y^{{{power:g}}}$")
     rump = independent_tower(list(PAIR), 1).velocities
     ax.text(
         0.02,
         0.95,
-        f"independent bangs: V1 = {rump[0]:g}, V2 = {rump[1]:g}",
+        f"independent bangs: $V_1$ = {rump[0]:g}, $V_2$ = {rump[1]:g}",
         transform=ax.transAxes,
-        fontsize="x-small",
+        fontsize="small",
         va="top",
     )
 
@@ -73,22 +82,30 @@ def _soft_pair_quartic(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 @figure(
     "soft-pair-linear",
     "Fig. 7.7",
-    "Linear force kills super-elastic bounce: the same 7:1 pair with linear contact forces "
-    "F = k y. The two balls leave nearly together (compare the quartic case of Fig. 7.6).",
+    (
+        "Linear force kills super-elastic bounce: the same 7:1 pair with linear contact forces "
+        "F = ky leaves nearly together (compare the quartic case of Fig. 7.6); heights of the "
+        "balls' bottoms in scaled units."
+    ),
     ("ch07.crapcorp.v2", "ch07.rumpco.v2"),
 )
 def _soft_pair_linear(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    fig.set_size_inches(7.6, 4.4)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    _soft_pair(ax, LINEAR, "linear force, power 1")
+    _soft_pair(ax, LINEAR, r"linear force $F = k\,y$")
 
 
 @figure(
     "linear-targets",
     "Fig. 7.4",
-    "Total potentials u(y) = y above the target and a y^2 + y inside it (graph units, y = Y/10 m) "
-    "for the hardball (a = 8), medium (a = 1) and softball (a = 1/4) targets; the dotted line "
-    "is the energy of the 30 m fall (y = 3). The dot is the book's hardball stop, y = -0.61, "
-    "where the target's 8 y^2 alone takes up that energy; the total potential reaches it at -0.68.",
+    (
+        "Total potentials u(y) = y above the target and ay² + y inside it (graph units, y = "
+        "Y/10 m) for the hardball (a = 8), medium (a = 1) and softball (a = 1/4) targets, and "
+        "the energy of the 30 m fall (dotted, y = 3). The dot is the book's hardball stop y = "
+        "−0.61, where the target's 8y² alone takes up that energy; the total potential reaches "
+        "it at −0.68."
+    ),
     ("ch07.hardball.quadratic", "ch07.softball.quadratic", "ch07.hardball.stop"),
 )
 def _linear_targets(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -96,15 +113,17 @@ def _linear_targets(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     soft = value_of(claims, "ch07.softball.quadratic")
     height = value_of(claims, "ch07.hardball.fall-height")
     slope = value_of(claims, "ch07.graph.gravity-slope")
+    fig.set_size_inches(7.6, 4.4)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     ys = [-4 + 0.02 * k for k in range(351)]
     for a, name in ((hard, "hardball"), (1, "medium"), (soft, "softball")):
         us = [slope * y + (a * y * y if y < 0 else 0) for y in ys]
-        ax.plot(ys, us, label=f"{name}: a = {a:g}")
-    ax.axhline(height, linestyle=":", color="0.4", label="fall energy")
+        ax.plot(ys, us, label=f"{name}, $a = {a:g}$")
+    ax.axhline(height, linestyle=":", color="0.4", label="energy of the fall")
     stop = linear_target(hard, height, value_of(claims, "ch07.daredevil.height")).stop
-    ax.plot([stop], [hard * stop * stop + slope * stop], "ko")
+    ax.plot([stop], [hard * stop * stop + slope * stop], "ko", label="book's hardball stop")
     ax.set_ylim(-1.5, 4)
-    ax.set_xlabel("y (graph units)")
-    ax.set_ylabel("u(y)")
-    ax.legend(fontsize="x-small")
+    ax.set_xlabel(r"height $y = Y/(10\,\mathrm{m})$ (graph units)")
+    ax.set_ylabel("potential $u(y)$ (graph units)")
+    ax.legend(fontsize="small", loc="lower right")

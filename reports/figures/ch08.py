@@ -18,29 +18,36 @@ if TYPE_CHECKING:
 @figure(
     "tower-100-30-10",
     "Fig. 8.1(b)",
-    "The 100/30/10 tower with independent collisions: each bang in the plane of the two "
-    "velocities it changes, from START to END along the momentum line of slope -m_lower/m_upper.",
+    (
+        "The 100/30/10 tower with independent collisions: each bang in the plane of the two "
+        "velocities it changes (scaled), from START to END along the momentum line of slope "
+        "−(lower mass)/(upper mass)."
+    ),
     ("ch08.tower-100-30-10.v1", "ch08.tower-100-30-10.v2-mid", "ch08.tower-100-30-10.v3"),
 )
 def _tower(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     masses = [value_of(claims, f"ch08.tower-100-30-10.m{k}") for k in (1, 2, 3)]
     tower = independent_tower(masses, value_of(claims, "ch08.tower-100-30-10.v-drop"))
+    fig.set_size_inches(9.0, 4.4)
+    fig.set_layout_engine("constrained", w_pad=0.1)
     for k, bang in enumerate(tower.bangs):
         ax = fig.add_subplot(1, len(tower.bangs), k + 1)
         (a0, b0), (a1, b1) = bang.before, bang.after
         ax.plot([a0, a1], [b0, b1], "-o")
-        ax.annotate("START", (a0, b0), textcoords="offset points", xytext=(5, -10))
+        ax.annotate("START", (a0, b0), textcoords="offset points", xytext=(-8, -6), ha="right")
         ax.annotate(
-            f"END ({a1:.3g}, {b1:.3g})", (a1, b1), textcoords="offset points", xytext=(5, 5)
+            f"END ({a1:.3g}, {b1:.3g})", (a1, b1), textcoords="offset points", xytext=(8, -4)
         )
-        ax.set_xlabel(f"V{k + 1}")
-        ax.set_ylabel(f"V{k + 2}")
+        ax.set_xlabel(f"velocity $V_{k + 1}$ (scaled)")
+        ax.set_ylabel(f"velocity $V_{k + 2}$ (scaled)")
         ax.set_title(
-            f"Bang({k + 2}){k + 1}{k + 2}: masses {masses[k]:g}/{masses[k + 1]:g}", fontsize="small"
+            f"Bang-{k + 2}({k + 1}{k + 2}): masses {masses[k]:g}/{masses[k + 1]:g}",
+            fontsize="medium",
         )
         ax.axhline(0, color="0.8")
         ax.axvline(0, color="0.8")
-    fig.suptitle(f"top ball leaves at V3 = {tower.velocities[-1]:.4g}", fontsize="small")
+        ax.margins(0.25)
+    fig.suptitle(f"top ball leaves at $V_3$ = {tower.velocities[-1]:.4g}", fontsize="medium")
 
 
 # Fig. 8.1(c)'s linear law: F = k y, the power 1 (the label "F(y) = k y" prints no number).
@@ -65,63 +72,90 @@ def _tower_paths(ax: Axes, masses: list[float], power: float, v_drop: float, tit
         ax.plot(
             times,
             [h + k * size for h in heights],
-            label=f"m{k + 1} = {masses[k]:g}: V = {finals[k]:.3g}",
+            label=f"$m_{k + 1} = {masses[k]:g}$: $V_{k + 1}$ = {finals[k]:.3g}",
         )
     ax.axhline(0, color="k", linewidth=0.8)
-    ax.set_title(title, fontsize="small")
-    ax.set_xlabel("time (contact units)")
-    ax.legend(fontsize="x-small")
+    ax.set_title(title, fontsize="medium")
+    ax.set_xlabel("time $t$ (contact-time units)")
+    ax.set_ylabel("height of each ball's bottom (scaled)")
+    ax.legend(fontsize="small", loc="upper left")
 
 
 @figure(
     "tower-zero-gap",
     "Fig. 8.1(a), (c)",
-    "The 100/30/10 tower dropped at speed 1 with zero gaps, integrated with one contact law for "
-    "the floor and both ball pairs and no gravity during the contact: (a) quartic F = k y^4, the "
-    "top ball leaves at 3.41; (c) linear F = k y, super-elastic bounce squelched.",
+    (
+        "The 100/30/10 tower dropped at speed 1 with zero gaps, integrated with one contact law"
+        " for the floor and both ball pairs and no gravity during the contact: (a) quartic F = "
+        "ky⁴, the top ball leaves at 3.41; (c) linear F = ky, super-elastic bounce squelched. "
+        "Heights of the balls' bottoms in scaled units."
+    ),
     ("ch08.tower-100-30-10.v3-quartic", "ch08.tower-100-30-10.v3"),
 )
 def _tower_zero_gap(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     masses = [value_of(claims, f"ch08.tower-100-30-10.m{k}") for k in (1, 2, 3)]
     v_drop = value_of(claims, "ch08.tower-100-30-10.v-drop")
+    fig.set_size_inches(9.6, 4.4)
+    fig.set_layout_engine("constrained", w_pad=0.1)
     quartic = fig.add_subplot(1, 2, 1)
-    _tower_paths(quartic, masses, 4, v_drop, "(a) quartic force")
-    quartic.set_ylabel("bottom of each ball (floor at 0)")
-    _tower_paths(fig.add_subplot(1, 2, 2), masses, LINEAR, v_drop, "(c) linear force")
+    _tower_paths(quartic, masses, 4, v_drop, "(a) quartic force $F = k\\,y^4$")
+    _tower_paths(fig.add_subplot(1, 2, 2), masses, LINEAR, v_drop, "(c) linear force $F = k\\,y$")
 
 
 @figure(
     "four-ball-towers",
     "Fig. 8.2(a), (b)",
-    "Velocities of the balls of the 4-ball towers with independent bangs, each ball 3 (a) or 7 "
-    "(b) times the one above: after each bang, the rising ball's velocity grows by the factor "
-    "2 m_k / (m_k + m_(k+1)) on V + 1; the top ball reaches 5.75 and 9.72.",
+    (
+        "Velocities, in units of the drop speed, of the 4-ball towers with independent bangs, "
+        "each ball 3 (a) or 7 (b) times the one above: at each bang the rising ball's velocity "
+        "grows by the factor 2mₖ/(mₖ + mₖ₊₁) on V + 1, and the top ball reaches 5.75 and 9.72. "
+        "Solid: each ball just after its bang; dotted: the final velocities."
+    ),
     ("ch08.tower-3.top", "ch08.tower-7.top"),
 )
 def _four_ball_towers(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     n = round(value_of(claims, "ch08.tower-3.n-balls"))
     v_drop = value_of(claims, "ch08.tower-100-30-10.v-drop")
+    fig.set_size_inches(7.6, 4.4)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    for key, marker in (("ch08.tower-3.ratio", "o"), ("ch08.tower-7.ratio", "s")):
+    for k, (key, marker) in enumerate((("ch08.tower-3.ratio", "o"), ("ch08.tower-7.ratio", "s"))):
         ratio = value_of(claims, key)
         tower = geometric_tower(n, ratio, v_drop)
         rising = [tower.rebound, *(bang.v2 for bang in tower.bangs)]
         ax.plot(
-            range(1, n + 1), rising, f"-{marker}", label=f"ratio {ratio:g}: V{n} = {rising[-1]:.3g}"
+            range(1, n + 1),
+            rising,
+            f"-{marker}",
+            label=f"({'ab'[k]}) ratio {ratio:g}: $V_{n}$ = {rising[-1]:.3g}",
         )
-        ax.plot(range(1, n + 1), tower.velocities, f":{marker}", color="0.6")
-    ax.plot(range(1, n + 1), [2**k - 1 for k in range(1, n + 1)], "k--", label="INF limit 2^k - 1")
-    ax.set_xlabel("ball k (bottom = 1)")
-    ax.set_ylabel("velocity after its bang (dotted: final)")
+        ax.plot(
+            range(1, n + 1),
+            tower.velocities,
+            f":{marker}",
+            color="0.6",
+            label="final velocities" if k == 1 else None,
+        )
+    ax.plot(
+        range(1, n + 1),
+        [2**k - 1 for k in range(1, n + 1)],
+        "k--",
+        label="infinite ratio: $2^k - 1$",
+    )
+    ax.set_xticks(range(1, n + 1))
+    ax.set_xlabel("ball $k$ (bottom = 1)")
+    ax.set_ylabel("velocity $V_k$ (units of the drop speed)")
     ax.legend(fontsize="small")
 
 
 @figure(
     "pellet-rocket",
     "Fig. 8.8",
-    "The rocket of 11 unit balls blown apart one pellet at a time at exhaust velocity -1: the "
-    "rocket's velocity V(b) after blast b (harmonic partial sums) and each pellet's final "
-    "velocity V(b-1) - 1; pellets 7, 8, 9 end up moving forward.",
+    (
+        "The rocket of 11 unit balls blown apart one pellet at a time at exhaust velocity −1, "
+        "velocities in units of |vₑ|: the rocket's V(b) after blast b (harmonic partial sums) "
+        "and each pellet's final velocity V(b−1) − 1; pellets 7, 8 and 9 end up moving forward."
+    ),
     ("ch08.rocket.velocity-9", "ch08.rocket.first-forward-pellet", "ch08.rocket.first-fast-blast"),
 )
 def _pellet_rocket(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -131,11 +165,15 @@ def _pellet_rocket(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         value_of(claims, "ch08.rocket.exhaust"),
     )
     blasts = list(range(rocket.blasts))
+    fig.set_size_inches(7.6, 4.4)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    ax.step(blasts, rocket.velocities, where="post", label="rocket V(b)")
-    ax.plot(blasts, rocket.pellet_velocities, "o", label="pellet b")
+    ax.step(blasts, rocket.velocities, where="post", label="rocket $V(b)$")
+    ax.plot(blasts, rocket.pellet_velocities, "o", label="pellet $b$, final")
     ax.axhline(0, color="k", linewidth=0.8)
-    ax.axhline(-value_of(claims, "ch08.rocket.exhaust"), color="0.6", linestyle=":", label="|ve|")
-    ax.set_xlabel("blast b")
-    ax.set_ylabel("velocity (units of |ve|)")
+    ax.axhline(
+        -value_of(claims, "ch08.rocket.exhaust"), color="0.6", linestyle=":", label="$|v_e|$"
+    )
+    ax.set_xlabel("blast $b$")
+    ax.set_ylabel("velocity (units of $|v_e|$)")
     ax.legend(fontsize="small")

@@ -27,15 +27,20 @@ if TYPE_CHECKING:
 @figure(
     "tunnel-and-orbit",
     "Fig. 9.8",
-    "A body dropped through a tunnel across a uniform Earth and a satellite in the grazing "
-    "circular orbit keep the same x coordinate and meet on the far side after half a period; "
-    "a body in a tunnel off the centre (dashed chord) keeps the same time.",
+    (
+        "A body dropped through a tunnel across a uniform Earth and a satellite in the grazing "
+        "circular orbit keep the same x coordinate and meet on the far side after half a "
+        "period; a body in a tunnel off the centre (dashed chord) keeps the same time. "
+        "Positions in units of the Earth's radius R, times in minutes."
+    ),
     ("ch09.tunnel-time", "ch09.orbit-speed", "ch09.tunnel.period"),
 )
 def _tunnel(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     g = value_of(claims, "ch09.surface-gravity")
     radius = value_of(claims, "ch09.earth-radius")
     period = tunnel_period(g, radius)
+    fig.set_size_inches(7.0, 6.4)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     xs, ys = ellipse_points(1.0, 1.0)
     ax.plot(xs, ys, color="0.6", label="Earth's surface (= the orbit)")
@@ -48,9 +53,22 @@ def _tunnel(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         angle = math.pi * k / 8
         s, _ = chord_tunnel_position(g, radius, 0.0, time)
         s_chord, _ = chord_tunnel_position(g, radius, offset, time)
-        ax.plot([math.cos(angle)], [math.sin(angle)], "o", color="C0")
-        ax.plot([s / radius], [0], "s", color="C1")
-        ax.plot([s_chord / radius], [-offset / radius], "d", color="C2")
+        first = k == 0
+        ax.plot(
+            [math.cos(angle)],
+            [math.sin(angle)],
+            "o",
+            color="C0",
+            label="satellite" if first else None,
+        )
+        ax.plot([s / radius], [0], "s", color="C1", label="body in the tunnel" if first else None)
+        ax.plot(
+            [s_chord / radius],
+            [-offset / radius],
+            "d",
+            color="C2",
+            label="body in the chord" if first else None,
+        )
         ax.plot([math.cos(angle)] * 2, [0, math.sin(angle)], ":", color="0.7")
         if k in (0, 4, 8):
             ax.annotate(
@@ -61,17 +79,21 @@ def _tunnel(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
                 fontsize="small",
             )
     ax.set_aspect("equal")
-    ax.set_xlabel("x / R")
-    ax.set_title(f"period 2π√(R/g) = {period / 60:.1f} min on every chord", fontsize="small")
-    ax.legend(loc="lower center", fontsize="x-small", ncols=2)
+    ax.set_xlabel("$x/R$")
+    ax.set_ylabel("$y/R$")
+    ax.set_title(f"period $2\\pi√(R/g)$ = {period / 60:.1f} min on every chord", fontsize="medium")
+    fig.legend(loc="outside lower center", fontsize="small", ncols=3)
 
 
 @figure(
     "earth-potential",
     "Fig. 9.7",
-    "Potential and field of a uniform Earth in units of mgR and mg: the parabola (x^2 - 3)/2 "
-    "inside meets -1/x outside at the surface with the same slope; the focus of the parabola "
-    "is lambda = 1 straight across from the surface point and its directrix lambda below.",
+    (
+        "Potential and field of a uniform Earth in units of mgR and mg, against x = r/R: the "
+        "parabola (x² − 3)/2 inside meets −1/x outside at the surface with the same slope; the "
+        "focus of the parabola is λ = 1 straight across from the surface point and its "
+        "directrix λ below."
+    ),
     (
         "ch09.earth.interior-offset",
         "ch09.earth.surface-potential",
@@ -84,13 +106,15 @@ def _earth_potential(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     surface = value_of(claims, "ch09.surface-x")
     pot = interior_potential(surface)
     geo = parabola_geometry(pot.quadratic)
+    fig.set_size_inches(7.6, 4.6)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     xs = [-3 + 6 * k / 600 for k in range(601)]
     # in units of the surface: g = 1 and R = surface give U in mgR and F in mg
     us = [gravity_potential(1, surface, abs(x)) for x in xs]
     fs = [math.copysign(1, x) * gravity_field(1, surface, abs(x)) for x in xs]
-    ax.plot(xs, us, color="C0", label="potential U(x)")
-    ax.plot(xs, fs, color="C3", label="force F(x)")
+    ax.plot(xs, us, color="C0", label="potential $U(x)$")
+    ax.plot(xs, fs, color="C3", label="force $F(x)$")
     focus = pot.offset + geo.focal_height
     directrix = pot.offset + geo.directrix_height
     ax.plot([0], [focus], "o", color="C2", label="focus of the inside parabola")
@@ -102,28 +126,39 @@ def _earth_potential(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.axvline(surface, color="0.85")
     ax.axhline(0, color="0.85")
     ax.set_ylim(-2.5, 1.5)
-    ax.set_xlabel("x = r / R")
-    ax.set_ylabel("U in mgR, F in mg")
-    ax.legend(loc="upper right", fontsize="x-small")
+    ax.set_xlabel("distance $x = r/R$")
+    ax.set_ylabel("$U$ (units of $mgR$), $F$ (units of $mg$)")
+    ax.legend(loc="upper right", fontsize="small")
 
 
 @figure(
     "parabola-focus-directrix",
     "Figs. 9.3-9.4",
-    "The parabola y = x^2: every point is as far from the focus (0, 1/4) as from the directrix "
-    "y = -1/4; the half-width at the focus is lambda = 1/2, where the slope is 1 and the kite of "
-    "focal radius and drop line is a square.",
+    (
+        "The parabola y = x² (scaled units): every point is as far from the focus (0, 1/4) as "
+        "from the directrix y = −1/4 (the numbers give that distance); the half-width at the "
+        "focus is λ = 1/2, where the slope is 1 and the kite of focal radius and drop line is a"
+        " square."
+    ),
     ("ch09.parabola.lambda", "ch09.parabola.focal-points", "ch09.parabola.square-kite-slope"),
 )
 def _parabola(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     geo = parabola_geometry(1)
     lam = value_of(claims, "ch09.parabola.lambda")
+    fig.set_size_inches(6.4, 5.2)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     xs = [-1.6 + 3.2 * k / 320 for k in range(321)]
-    ax.plot(xs, [geo.height(x) for x in xs], color="C0", label="y = x²")
+    ax.plot(xs, [geo.height(x) for x in xs], color="C0", label="$y = x^2$")
     ax.axhline(geo.directrix_height, color="C2", linestyle="--", label="directrix")
     ax.plot([0], [geo.focal_height], "o", color="C2", label="focus")
-    ax.plot([-lam, lam], [geo.focal_height] * 2, color="C1", linewidth=2, label="latus rectum 2λ")
+    ax.plot(
+        [-lam, lam],
+        [geo.focal_height] * 2,
+        color="C1",
+        linewidth=2,
+        label=r"latus rectum $2\lambda$",
+    )
     for x in (-1.4, -0.9, 0.5, 1.1):
         y = geo.height(x)
         ax.plot([x, 0], [y, geo.focal_height], color="0.4", linewidth=1)
@@ -134,27 +169,33 @@ def _parabola(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             (x, y),
             textcoords="offset points",
             xytext=(5, -12),
-            fontsize="x-small",
+            fontsize="small",
         )
     ax.set_aspect("equal")
     ax.set_ylim(geo.directrix_height - 0.3, 2.6)
-    ax.set_title("focal radius = distance to the directrix (labels)", fontsize="small")
-    ax.legend(loc="upper center", fontsize="x-small", ncols=2)
+    ax.set_xlabel("$x$ (scaled)")
+    ax.set_ylabel("$y$ (scaled)")
+    ax.set_title("focal radius = distance to the directrix", fontsize="medium")
+    ax.legend(loc="upper center", fontsize="small", ncols=2)
 
 
 @figure(
     "starlet-orbits",
     "Figs. 9.10-9.11",
-    "Orbits of a starlet inside the Earth: x and y oscillate with the same amplitude and "
-    "period, x behind y by 0 to 8 hours of the 16-hour phasor clock; every orbit is an ellipse "
-    "inside the square envelope |x|, |y| <= amplitude. The 2-hour (45 degree) orbit of "
-    "Fig. 9.10b is marked with its (x, y) clock hours.",
+    (
+        "Orbits of a starlet inside the Earth, in units of their amplitude: x and y oscillate "
+        "with the same amplitude and period, x behind y by 0 to 8 hours of the 16-hour phasor "
+        "clock, and every orbit is an ellipse inside the square |x|, |y| ≤ 1. The 2-hour (45°) "
+        "orbit of Fig. 9.10b (bold) is marked with its (x, y) clock hours."
+    ),
     ("ch09.phasor.lag-angle", "ch09.phasor.y-hour", "ch09.phasor.quadrature-rad"),
 )
 def _starlet_orbits(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     clock = int(value_of(claims, "ch09.phasor.clock"))
     lead = int(value_of(claims, "ch09.phasor.lead"))
     omega = 2 * math.pi / clock  # one turn per clock period, time in hours
+    fig.set_size_inches(6.4, 6.0)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     ax.plot([-1, 1, 1, -1, -1], [-1, -1, 1, 1, -1], color="0.6", label="envelope")
     steps = [clock * k / 240 for k in range(241)]
@@ -171,10 +212,14 @@ def _starlet_orbits(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             f"({clock_hour(hour, 0, clock)},{clock_hour(hour, lead, clock)})",
             (state.x, state.y),
             textcoords="offset points",
-            xytext=(3, 3),
-            fontsize="xx-small",
+            xytext=(4 if state.x >= 0 else -4, 3 if state.y >= 0 else -3),
+            ha="left" if state.x >= 0 else "right",
+            va="bottom" if state.y >= 0 else "top",
+            fontsize="small",
         )
     ax.set_aspect("equal")
-    ax.set_xlabel("x / amplitude")
-    ax.set_ylabel("y / amplitude")
-    ax.set_title(f"x behind y by 0..{clock // 2} hours; bold: {lead} hours", fontsize="small")
+    ax.set_xlim(-1.3, 1.3)
+    ax.set_ylim(-1.2, 1.2)
+    ax.set_xlabel("$x$ / amplitude")
+    ax.set_ylabel("$y$ / amplitude")
+    ax.set_title(f"$x$ behind $y$ by 0 to {clock // 2} hours", fontsize="medium")

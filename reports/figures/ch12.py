@@ -22,6 +22,8 @@ from mechmodel.lagrange import (
 from reports.figures import ellipse_points, figure, value_of
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.colors import Colormap
     from matplotlib.figure import Figure
 
     from reference.evaluation import EvaluatedClaim
@@ -30,11 +32,13 @@ if TYPE_CHECKING:
 @figure(
     "lagrange-estrangian-hamiltonian",
     "Figs. 12.1-12.2",
-    "The kinetic energy KE = 1 as an ellipse L(v) in velocities, a circle E(V) in quasi-velocities "
-    "V = sqrt(m) v and an ellipse H(p) in momenta, for the figure's mass ratio m1/m2 = 16 (read "
-    "from its collision slope -16). Solid: the collision line through the COM point, with the "
-    "slopes -16, -4, -1 the model gives; dashed: the COM bisector, slopes 1, 1/4, 1/16. Only in V "
-    "are the two perpendicular. Each H radius is m_k times its L radius.",
+    (
+        "The kinetic energy KE = 1 as an ellipse L(v) in velocities, a circle E(V) in "
+        "quasi-velocities Vₖ = √mₖ vₖ and an ellipse H(p) in momenta (scaled units), for the "
+        "figure's mass ratio m₁/m₂ = 16 (read from its collision slope −16): the collision line"
+        " through the COM point (red) and the COM bisector (dashed), perpendicular only in V. "
+        "Each H radius is mₖ times its L radius."
+    ),
     (
         "ch12.fig12-1.collision-slope",
         "ch12.fig12-1.velocity-bisector",
@@ -51,17 +55,34 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     energy = 1.0
     radii = energy_ellipse_radii([m1, m2], energy)
     planes = [
-        ("L(v): velocities", radii.velocity, (1, 1), s.velocity_collision, s.velocity_bisector),
         (
-            "E(V): quasi-velocities",
+            "$L(v)$: velocities",
+            ("$v_1$ (scaled)", "$v_2$ (scaled)"),
+            radii.velocity,
+            (1, 1),
+            s.velocity_collision,
+            s.velocity_bisector,
+        ),
+        (
+            "$E(V)$: quasi-velocities",
+            (r"$V_1 = √m_1\,v_1$ (scaled)", r"$V_2 = √m_2\,v_2$ (scaled)"),
             [math.sqrt(2 * energy)] * 2,
             (math.sqrt(m1), math.sqrt(m2)),
             s.quasi_collision,
             s.quasi_bisector,
         ),
-        ("H(p): momenta", radii.momentum, (m1, m2), s.momentum_collision, s.momentum_bisector),
+        (
+            "$H(p)$: momenta",
+            ("$p_1 = m_1 v_1$ (scaled)", "$p_2 = m_2 v_2$ (scaled)"),
+            radii.momentum,
+            (m1, m2),
+            s.momentum_collision,
+            s.momentum_bisector,
+        ),
     ]
-    for k, (title, (a, b), scale, collision, bisector) in enumerate(planes):
+    fig.set_size_inches(11.0, 4.8)
+    fig.set_layout_engine("constrained", w_pad=0.1)
+    for k, (title, (xlabel, ylabel), (a, b), scale, collision, bisector) in enumerate(planes):
         ax = fig.add_subplot(1, 3, k + 1)
         x, y = ellipse_points(a, b)
         ax.plot(x, y, color="C0")
@@ -70,24 +91,41 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         cx, cy = scale[0] * u, scale[1] * u
         span = 1.3 * max(a, b)
         t = np.linspace(-span, span, 3)
-        ax.plot(t, float(bisector) * t, "--", color="0.4", lw=0.8)
+        ax.plot(
+            t,
+            float(bisector) * t,
+            "--",
+            color="0.4",
+            lw=1,
+            label=f"COM bisector, slope ${bisector}$",
+        )
         dx = span / math.hypot(1, float(collision))
-        ax.plot([cx - dx, cx + dx], [cy - float(collision) * dx, cy + float(collision) * dx], "C3")
-        ax.plot([cx], [cy], "ko", ms=3)
+        ax.plot(
+            [cx - dx, cx + dx],
+            [cy - float(collision) * dx, cy + float(collision) * dx],
+            "C3",
+            label=f"collision line, slope ${collision}$",
+        )
+        ax.plot([cx], [cy], "ko", ms=4)
         ax.set_aspect("equal")
         ax.set_xlim(-span, span)
         ax.set_ylim(-span, span)
-        ax.set_title(f"{title}\ncollision {collision}, bisector {bisector}", fontsize="x-small")
-        ax.tick_params(labelsize="xx-small")
+        ax.set_title(title, fontsize="medium")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.17), fontsize="small", frameon=False)
 
 
 @figure(
     "legendre-tangent",
     "Figs. 12.3-12.4",
-    "Legendre contact geometry with the figure's numbers: a convex L(v) = v^1.6 has value 1.0 and "
-    "slope p = 1.6 at v = 1.0; its tangent there meets the L axis at -H = -0.6, and H(p), found "
-    "numerically as max_v (p v - L), has slope v = 1.0 at p = 1.6 and a tangent meeting the H "
-    "axis at -L = -1.0. Grey: secant lines of slope p with lower intercepts (Fig. 12.4a).",
+    (
+        "Legendre contact geometry with the figure's numbers (scaled units): (a) the convex "
+        "L(v) = v^1.6 has value 1 and slope p = 1.6 at v = 1, and its tangent there meets the L"
+        " axis at −H = −0.6 (grey: lines of that slope with lower intercepts, Fig. 12.4a); (b) "
+        "H(p) = max over v of (pv − L), found numerically, has slope v = 1 at p = 1.6 and a "
+        "tangent meeting the H axis at −L = −1."
+    ),
     (
         "ch12.fig12-3.h",
         "ch12.fig12-3.l-intercept",
@@ -104,39 +142,43 @@ def _legendre(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     h0 = value_of(claims, "ch12.fig12-3.h")
     vs = np.linspace(-0.2, 2.0, 121)
     ps = np.linspace(-0.2, 3.0, 81)
+    fig.set_size_inches(9.6, 4.2)
+    fig.set_layout_engine("constrained", w_pad=0.1)
     ax1, ax2 = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
-    ax1.plot(vs, [lag(v) for v in vs], color="C0", label="L(v)")
-    ax1.plot(vs, p0 * vs - h0, color="C3", label=f"tangent, slope p = {p0:g}")
+    ax1.plot(vs, [lag(v) for v in vs], color="C0", label=f"$L(v) = v^{{{power:g}}}$")
+    ax1.plot(vs, p0 * vs - h0, color="C3", label=f"tangent, slope $p = {p0:g}$")
     for shift in (0.3, 0.6):
-        ax1.plot(vs, p0 * vs - h0 - shift, color="0.7", lw=0.7)
-    ax1.plot([0, v0], [-h0, l0], "ko", ms=3)
+        ax1.plot(vs, p0 * vs - h0 - shift, color="0.7", lw=0.8)
+    ax1.plot([0, v0], [-h0, l0], "ko", ms=4)
     ax1.set_title(
-        f"(a) intercept -H = {value_of(claims, 'ch12.fig12-3.l-intercept'):g}", fontsize="small"
+        f"(a) intercept $-H = {value_of(claims, 'ch12.fig12-3.l-intercept'):g}$", fontsize="medium"
     )
-    ax1.set_xlabel("velocity v")
-    ax1.legend(fontsize="x-small")
-    ax2.plot(ps, [ham(p) for p in ps], color="C2", label="H(p) = max (p v - L)")
-    ax2.plot(ps, v0 * ps - l0, color="C3", label=f"tangent, slope v = {v0:g}")
-    ax2.plot([0, p0], [-l0, h0], "ko", ms=3)
+    ax1.set_xlabel("velocity $v$ (scaled)")
+    ax1.set_ylabel("Lagrangian $L$ (scaled)")
+    ax2.plot(ps, [ham(p) for p in ps], color="C2", label=r"$H(p) = \max_v\,(pv - L)$")
+    ax2.plot(ps, v0 * ps - l0, color="C3", label=f"tangent, slope $v = {v0:g}$")
+    ax2.plot([0, p0], [-l0, h0], "ko", ms=4)
     ax2.set_title(
-        f"(b) intercept -L = {value_of(claims, 'ch12.fig12-3.h-intercept'):g}", fontsize="small"
+        f"(b) intercept $-L = {value_of(claims, 'ch12.fig12-3.h-intercept'):g}$", fontsize="medium"
     )
-    ax2.set_xlabel("momentum p")
-    ax2.legend(fontsize="x-small")
+    ax2.set_xlabel("momentum $p$ (scaled)")
+    ax2.set_ylabel("Hamiltonian $H$ (scaled)")
     for ax in (ax1, ax2):
         ax.axhline(0, color="0.5", lw=0.5)
         ax.axvline(0, color="0.5", lw=0.5)
-        ax.tick_params(labelsize="x-small")
+        ax.legend(fontsize="small", loc="upper left")
 
 
 @figure(
     "fountain-envelope",
     "Figs. 12.5-12.6",
-    "The volcanoes of Io and the atomic fountain: trajectories of one speed v0 = 1 (g = 1, scaled) "
-    "at elevations every 7.5 degrees, each touching the dashed envelope "
-    "y = v0^2/(2g) - g x^2/(2 v0^2) once, at x = v0^2/(g tan a) (dots). The 45 degree path (red) "
-    "touches it at the ground; the horizontal one (green) has the envelope's shape and never "
-    "touches it.",
+    (
+        "The volcanoes of Io and the atomic fountain: trajectories of one speed v₀ = 1 (g = 1; "
+        "lengths in units of v₀²/g) at elevations every 7.5°, each touching the envelope y = "
+        "v₀²/(2g) − gx²/(2v₀²) once, at x = v₀²/(g tan a) (dots). The 45° paths (red) touch it "
+        "at the ground; the horizontal launch (green) has the envelope's shape and never "
+        "touches it."
+    ),
     (
         "ch12.fountain.envelope-constant-denominator",
         "ch12.fountain.envelope-denominator",
@@ -149,6 +191,8 @@ def _fountain(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     v0, g = 1.0, 1.0
     reach = v0**2 / g
     xs = np.linspace(-1.2 * reach, 1.2 * reach, 241)
+    fig.set_size_inches(8.0, 4.6)
+    fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     for k in range(1, 24):
         a = k * math.pi / 24
@@ -156,34 +200,50 @@ def _fountain(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             continue
         ahead = xs[xs >= 0] if a < math.pi / 2 else xs[xs <= 0]  # from the launch point on
         ys = [trajectory_height(x, v0, a, g) for x in ahead]
-        color = "C3" if k in (6, 18) else "C0"
-        ax.plot(ahead, ys, color=color, lw=1.2 if color == "C3" else 0.6)
+        steep = k in (6, 18)
+        ax.plot(
+            ahead,
+            ys,
+            color="C3" if steep else "C0",
+            lw=1.4 if steep else 0.6,
+            label="45° paths" if k == 6 else ("other elevations" if k == 1 else None),
+        )
         xc, yc = contact_point(v0, a, g)
-        ax.plot([xc], [yc], "o", color="k", ms=2.5)
+        ax.plot([xc], [yc], "o", color="k", ms=3, label="contact points" if k == 1 else None)
     shape = float(value_of(claims, "ch12.fountain.envelope-shape-angle"))
-    ax.plot(xs, [trajectory_height(x, v0, shape, g) for x in xs], color="C2", lw=1.2)
-    ax.plot(xs, [envelope_height(x, v0, g) for x in xs], "k--", lw=1.2, label="envelope (12.17)")
-    ax.set_ylim(-0.6 * reach, 0.6 * reach)
+    ax.plot(
+        xs,
+        [trajectory_height(x, v0, shape, g) for x in xs],
+        color="C2",
+        lw=1.4,
+        label="horizontal launch",
+    )
+    ax.plot(xs, [envelope_height(x, v0, g) for x in xs], "k--", lw=1.4, label="envelope (12.17)")
+    ax.set_ylim(-0.6 * reach, 0.62 * reach)
     ax.set_xlim(-1.2 * reach, 1.2 * reach)
     ax.set_aspect("equal")
-    ax.set_xlabel("x (units v0^2/g)")
-    ax.set_ylabel("y")
+    ax.set_xlabel("$x$ (units of $v_0^2/g$)")
+    ax.set_ylabel("$y$ (units of $v_0^2/g$)")
     ax.set_title(
-        f"y_env = v0^{fam.envelope_constant_v0_power}/({fam.envelope_constant_denominator}g) "
-        f"- g x^{fam.envelope_x_power}/({fam.envelope_quadratic_denominator} v0^"
-        f"{fam.envelope_v0_power})",
-        fontsize="small",
+        f"$y_{{\\rm env}} = v_0^{{{fam.envelope_constant_v0_power}}}"
+        f"/({fam.envelope_constant_denominator}g)"
+        f" - g\\,x^{{{fam.envelope_x_power}}}/({fam.envelope_quadratic_denominator}"
+        f"\\,v_0^{{{fam.envelope_v0_power}}})$",
+        fontsize="medium",
     )
-    ax.legend(fontsize="x-small", loc="lower right")
+    fig.legend(loc="outside right center", fontsize="small")
 
 
 @figure(
     "polar-bases",
     "Fig. 12.10",
-    "Polar coordinate grid with the covariant bases E_r, E_phi (columns of the Jacobian J, "
-    "tangent to the coordinate lines; E_phi grows with r) and the contravariant bases E^r, E^phi "
-    "(rows of K = J^-1, normal to the lines; E^phi shrinks as 1/r) at three points. Their dot "
-    "products give the metric diag(1, r^2) and its inverse diag(1, 1/r^2) (12.30).",
+    (
+        "The polar coordinate grid (scaled units) with the covariant bases Eᵣ, Eᵩ (columns of "
+        "the Jacobian J, tangent to the coordinate lines; Eᵩ grows with r) and the "
+        "contravariant bases Eʳ, Eᵠ (rows of K = J⁻¹, normal to the lines; Eᵠ shrinks as 1/r) "
+        "at three points; Eᵣ and Eʳ coincide. Their dot products give the metric diag(1, r²) "
+        "and its inverse diag(1, 1/r²) (12.30)."
+    ),
     (
         "ch12.polar.metric-rr",
         "ch12.polar.metric-rphi",
@@ -193,6 +253,7 @@ def _fountain(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ),
 )
 def _polar(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
+    fig.set_size_inches(6.4, 5.4)
     ax = fig.add_subplot()
     theta = np.linspace(0, math.pi / 2, 91)
     for r in np.arange(0.5, 3.01, 0.5):
@@ -204,6 +265,8 @@ def _polar(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         k = polar_kajobian(r, phi)
         x, y = r * math.cos(phi), r * math.sin(phi)
         scale = 0.35
+        # covariant wide and underneath, contravariant thin and dashed on top: E_r and E^r
+        # are the same vector, E_phi and E^phi point the same way
         for (dx, dy), color in (
             ((j[0][0], j[1][0]), "C0"),
             ((j[0][1], j[1][1]), "C1"),
@@ -212,33 +275,37 @@ def _polar(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
                 "",
                 (x + scale * dx, y + scale * dy),
                 (x, y),
-                arrowprops={"arrowstyle": "->", "color": color},
+                arrowprops={"arrowstyle": "->", "color": color, "lw": 3, "alpha": 0.7},
             )
         for (dx, dy), color in (((k[0][0], k[0][1]), "C2"), ((k[1][0], k[1][1]), "C3")):
             ax.annotate(
                 "",
                 (x + scale * dx, y + scale * dy),
                 (x, y),
-                arrowprops={"arrowstyle": "-|>", "color": color, "ls": "--"},
+                arrowprops={"arrowstyle": "-|>", "color": color, "ls": "--", "lw": 1.2},
             )
-    ax.plot([], [], "C0", label="E_r (covariant)")
-    ax.plot([], [], "C1", label="E_phi (covariant, length r)")
-    ax.plot([], [], "C2--", label="E^r (contravariant)")
-    ax.plot([], [], "C3--", label="E^phi (contravariant, length 1/r)")
+        ax.plot([x], [y], "ko", ms=3)
+    ax.plot([], [], "C0", lw=3, alpha=0.7, label=r"$\mathbf{E}_r$ (covariant)")
+    ax.plot([], [], "C1", lw=3, alpha=0.7, label=r"$\mathbf{E}_\phi$ (covariant, length $r$)")
+    ax.plot([], [], "C2--", label=r"$\mathbf{E}^r$ (contravariant)")
+    ax.plot([], [], "C3--", label=r"$\mathbf{E}^\phi$ (contravariant, length $1/r$)")
     ax.set_aspect("equal")
     ax.set_xlim(-0.1, 3.3)
     ax.set_ylim(-0.1, 3.3)
-    ax.legend(fontsize="x-small", loc="upper right")
-    ax.tick_params(labelsize="x-small")
+    ax.set_xlabel("$x$ (scaled)")
+    ax.set_ylabel("$y$ (scaled)")
+    ax.legend(fontsize="small", loc="upper right")
 
 
 @figure(
     "oscillator-phase-colour",
     "Figs. 12.13-12.14",
-    "Phase-coloured action: paths of the 2-D oscillator (omega = M = 1) blasted from r(0) = (1,0) "
-    "with the starlet's speed |v(0)| = 1 in 72 directions (exercise 1.12.3), each coloured by its "
-    "reduced action S_H = integral p.dr in units of hbar = 1/8, modulo 2 pi, on the hue circle "
-    "of line 16324 (red 0, cyan pi). Over one period every path gathers S_H = 2 pi E = 2 pi.",
+    (
+        "Paths (scaled units) of the 2-D oscillator (ω = M = 1) blasted from r(0) = (1, 0) with"
+        " the starlet's speed |v(0)| = 1 in 72 directions (exercise 1.12.3), coloured by the "
+        "phase of their reduced action S_H = ∫p·dr in units of ħ = 1/8, modulo 2π (the hue "
+        "circle: red 0, cyan π). Over one period every path gathers S_H = 2πE = 2π."
+    ),
     ("ch12.starlet.speed", "ch12.bohr.phase-turn", "ch12.palette.orange", "ch12.palette.blue"),
 )
 def _phase(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
@@ -249,6 +316,7 @@ def _phase(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     hbar = 1 / 8
     angles = [2 * math.pi * k / 72 for k in range(72)]
     paths = oscillator_paths((1.0, 0.0), speed, angles, duration=math.pi, samples=240)
+    fig.set_size_inches(6.4, 5.0)
     ax = fig.add_subplot()
     import matplotlib as mpl
 
@@ -262,6 +330,27 @@ def _phase(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.set_xlim(-1.6, 1.6)
     ax.set_ylim(-1.6, 1.6)
     ax.set_aspect("equal")
-    ax.set_xlabel("x")
-    ax.set_ylabel("y")
-    ax.tick_params(labelsize="x-small")
+    ax.set_xlabel("$x$ (scaled)")
+    ax.set_ylabel("$y$ (scaled)")
+    _hue_key(ax.inset_axes((0.75, 0.7, 0.24, 0.24)), cmap)
+
+
+def _hue_key(ax: Axes, cmap: Colormap) -> None:
+    """The hue circle of the phase, a picture: red at 0, cyan at pi."""
+    from matplotlib.patches import Wedge
+
+    steps = 72
+    for k in range(steps):
+        ax.add_patch(
+            Wedge(
+                (0, 0), 1, 360 * k / steps, 360 * (k + 1) / steps, width=0.35, color=cmap(k / steps)
+            )
+        )
+    for angle, name in ((0, "0"), (90, r"$\pi/2$"), (180, r"$\pi$"), (270, r"$3\pi/2$")):
+        c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+        ax.text(0.4 * c, 0.4 * s, name, ha="center", va="center", fontsize="small")
+    ax.set_xlim(-1.05, 1.05)
+    ax.set_ylim(-1.05, 1.05)
+    ax.set_aspect("equal")
+    ax.set_title("phase", fontsize="small", pad=2)
+    ax.set_axis_off()
