@@ -20,6 +20,7 @@ from reference.calls import ModelCallError
 from reference.catalog import CatalogDirectoryError, catalog_paths, default_directory
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
+from reference.formulas import unicode_formula
 from reference.power import ClassRate, PowerReport
 from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
@@ -118,6 +119,14 @@ def _say_failing(failing: list[str]) -> None:
     )
 
 
+CELL = 24  # the widest printed cell of the claims table; longer formulas go below the row
+
+
+def _cell(text: str, width: int) -> str:
+    """``text`` cut to ``width`` characters, an ellipsis marking the cut."""
+    return text if len(text) <= width else text[: width - 1] + "…"
+
+
 def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) -> None:
     rows = [c for c in evaluation if verdict is None or c.verdict == verdict]
     if as_json:
@@ -126,7 +135,8 @@ def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) ->
         return
     width = max((len(c.id) for c in rows), default=2)
     shown = [printed_shown(c) for c in rows]
-    pwidth = max((len(s) for s in shown), default=7)
+    pwidth = min(max((len(s) for s in shown), default=7), CELL)
+    pad = " " * (width + 2)
     print(f"{'id':<{width}}  {'line':>5}  {'printed':>{pwidth}}  {'model':>16}  verdict (expect)")
     for c, printed in zip(rows, shown, strict=True):
         mark = "" if c.passed else "   <-- differs"
@@ -135,15 +145,24 @@ def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) ->
             if c.rounding_reason or (c.matched_edition)
             else ""
         )
-        model = c.model_expression if c.kind == "formula" else c.model_value
+        if c.kind == "formula":
+            model = unicode_formula(c.model_expression) if c.model_expression else "-"
+        else:
+            model = _fmt(c.model_value)
         print(
-            f"{c.id:<{width}}  {c.line:>5}  {printed:>{pwidth}}  {_fmt(model):>16}  "
-            f"{c.verdict}{reason} ({c.expect}){mark}"
+            f"{c.id:<{width}}  {c.line:>5}  {_cell(printed, pwidth):>{pwidth}}  "
+            f"{_cell(model, 16):>16}  {c.verdict}{reason} ({c.expect}){mark}"
         )
+        if len(printed) > pwidth:  # a long formula in full, below its row
+            print(f"{pad}printed: {printed}")
+        if len(model) > 16:
+            print(f"{pad}model: {model}")
         if c.verdict in ("erratum", "dated"):
             diagnosis = c.diagnosis or {}
-            pad = " " * (width + 2)
-            print(f"{pad}correct: {c.correct or '-'}")
+            correct = c.correct or "-"
+            if c.kind == "formula" and c.correct:
+                correct = unicode_formula(c.correct)
+            print(f"{pad}correct: {correct}")
             if diagnosis.get("kind"):
                 print(f"{pad}diagnosis: {diagnosis['kind']}: {diagnosis['note']}")
             if diagnosis.get("auto"):
