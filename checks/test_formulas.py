@@ -118,9 +118,13 @@ def test_an_exact_zero_agrees_with_a_zero_model_but_not_with_a_small_one() -> No
         ("1/(4*A)", "1/(4·A)"),
         ("sqrt(2*g*h)", "√(2·g·h)"),
         ("x**2/(2*lamda)", "x²/(2·λ)"),
-        ("m*omega0**-2", "m·ω0⁻²"),
+        ("m*omega0**-2", "m·ω₀⁻²"),
+        ("am3*(x + I*y)**(-2)/(-2) + log((x + I*y))", "a₋₃·z⁻²/(−2)+ln(z)"),
+        ("x - m1", "x−m₁"),
+        ("exp(I*2*theta)/r**2", "e^(i·2·θ)/r²"),
+        ("x**(2*n) + x**(-1) + x**2.5", "x^(2·n)+x⁻¹+x^2.5"),
         ("t**3/factorial(3) + I*theta", "t³/3!+i·θ"),
-        ("log(z) + E**x + En*I0", "ln(z)+e^x+En·I0"),
+        ("log(z) + E**x + En*I0", "ln(z)+e^x+En·I₀"),
     ],
 )
 def test_formulas_are_shown_as_the_book_prints_them(text: str, shown: str) -> None:

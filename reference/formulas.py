@@ -284,10 +284,15 @@ def _unicode_names() -> dict[str, str]:
     return names
 
 
+_SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
 def unicode_formula(text: str) -> str:
-    """A formula in sympy syntax as the book would print it: Greek letters, superscript
-    powers, a middle dot for a product, √ for a square root, k! for factorial(k), i and e for
-    sympy's I and E, ln for log ("omega**2*r" -> "ω²·r")."""
+    """A formula in sympy syntax as the book would print it ("omega**2*r" -> "ω²·r"): Greek
+    letters, superscript powers, a middle dot for a product, √ for a square root, k! for
+    factorial(k), i and e for sympy's I and E, ln for log, e^(...) for exp(...), an index as a
+    subscript ("omega0" -> "ω₀", "am3" -> "a₋₃" for a_-3), z, z* and w for x + iy, x - iy and
+    u + iv, and a true minus sign."""
     supers = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
     out = text.replace(" ", "")
     for name, letter in sorted(_unicode_names().items(), key=lambda kv: -len(kv[0])):
@@ -295,15 +300,22 @@ def unicode_formula(text: str) -> str:
     out = _replace_word(out, "sqrt", "√")
 
     def power(match: re.Match[str]) -> str:
-        return match.group(1).translate(supers)
+        return (match[1] or match[2]).translate(supers)
 
-    out = re.sub(r"\*\*(-?\d+)", power, out)
+    out = re.sub(r"\*\*(?:\((-?\d+)\)|(-?\d+)(?![\d.]))", power, out)
     out = re.sub(r"factorial\((\w+)\)", r"\1!", out)
     out = re.sub(r"(?<![\w.])I(?!\w)", "i", out)  # sympy's imaginary unit
     out = re.sub(r"(?<![\w.])E(?!\w)", "e", out)  # and Euler's number
     out = re.sub(r"(?<!\w)log\(", "ln(", out)
+    out = re.sub(r"(?<!\w)exp\(", "e^(", out)
     out = out.replace("**", "^").replace("*", "·")
-    return out
+    out = re.sub(r"(?<!\w)am(\d+)(?!\w)", lambda m: "a₋" + m[1].translate(_SUBSCRIPTS), out)
+    out = re.sub(
+        r"(?<!\w)([^\W\d_]+)(\d+)(?!\w)", lambda m: m[1] + m[2].translate(_SUBSCRIPTS), out
+    )
+    for pair, name in (("x+i·y", "z"), ("x-i·y", "z*"), ("u+i·v", "w")):
+        out = out.replace(f"(({pair}))", f"({name})").replace(f"({pair})", name)
+    return out.replace("-", "−")
 
 
 def _replace_word(text: str, word: str, by: str) -> str:

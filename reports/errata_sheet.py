@@ -88,10 +88,10 @@ def _pretty(number: str) -> str:
 
 def _correction(claim: EvaluatedClaim) -> tuple[str, str]:
     """("for" the quoted span, "read" the correction) of one claim, as the book writes it: a
-    garbled number shown as it stands in the book (its ``means``)."""
+    garbled number shown as it stands in the book (its ``means``), a formula as transcribed."""
     correct = claim.correct or ""
-    if claim.kind == "formula":
-        return claim.quote, unicode_formula(correct)
+    if claim.kind == "formula":  # the formula as transcribed: a quote may be a fragment of it
+        return unicode_formula(claim.expression or ""), unicode_formula(correct)
     printed, quote = claim.printed, claim.quote
     if printed and printed in quote:
         shown = _pretty(claim.means) if claim.means else printed
