@@ -277,20 +277,6 @@ def earth_recoil(m: Any, earth_mass: Any) -> EarthRecoil:
     return EarthRecoil(m, earth_mass)
 
 
-def sagitta_denominator(spot_radius: Any, ball_radius: Any) -> Any:
-    """The k of the saggital approximation d = r^2/(k R) for a ball of radius R (Fig. 4.1).
-
-    A flat spot of radius r on a sphere of radius R lies at depth d = R - sqrt(R^2 - r^2); the
-    ratio r^2 / (R d) tends to 2 for r << R. Returned for the given r and R.
-    """
-    r = inputs.positive(spot_radius, "spot_radius")
-    big = inputs.positive(ball_radius, "ball_radius")
-    if r >= big:
-        raise ValueError("spot_radius must be smaller than ball_radius")
-    depth = big - math.sqrt(big * big - r * r)
-    return r * r / (big * depth)
-
-
 def sagitta_small_spot_depth(spot_radius: Any, ball_radius: Any) -> Any:
     """Depth d of a flat spot of radius r on a ball of radius R to leading order in r/R: the
     saggital approximation of Fig. 4.1.

@@ -337,28 +337,6 @@ def inverse_coordinates() -> CoordinateInverse:
     )
 
 
-@dataclass(frozen=True)
-class WirtingerCoefficients:
-    """d/dz = c_x d/dx + i c_y d/dy and d/dz* = c'_x d/dx + i c'_y d/dy, by the chain rule
-    (10.31). ``dz_dx`` = c_x, ``dz_dy_over_i`` = c_y, and the same for d/dz*."""
-
-    dz_dx: Fraction
-    dz_dy_over_i: Fraction
-    dzstar_dx: Fraction
-    dzstar_dy_over_i: Fraction
-
-
-def wirtinger_coefficients() -> WirtingerCoefficients:
-    """The chain-rule factors of d/dz and d/dz* (10.31): d/dz = dx/dz d/dx + dy/dz d/dy."""
-    inv = inverse_coordinates()
-    return WirtingerCoefficients(
-        dz_dx=_real(inv.dx_dz, "dx/dz"),
-        dz_dy_over_i=_real(inv.dy_dz / I_UNIT, "dy/dz / i"),
-        dzstar_dx=_real(inv.dx_dzstar, "dx/dz*"),
-        dzstar_dy_over_i=_real(inv.dy_dzstar / I_UNIT, "dy/dz* / i"),
-    )
-
-
 def d_dz(p: Poly) -> Poly:
     """z-derivative of a polynomial in x, y, holding z* fixed (10.31)."""
     inv = inverse_coordinates()
@@ -400,25 +378,6 @@ def _ratio(num: Poly, den: Poly) -> Gaussian:
     if num != den * ratio:
         raise ArithmeticError("the polynomials are not proportional")
     return ratio
-
-
-@dataclass(frozen=True)
-class DivCurlCoefficients:
-    """df/dz = c_d div F + i c_c curl F for f = Fx + i Fy (10.32)."""
-
-    divergence: Fraction
-    curl: Fraction
-
-
-def div_curl_coefficients() -> DivCurlCoefficients:
-    """The factors of the divergence and curl in df/dz (10.32), from two probe fields:
-    F = (x, 0) (divergence 1, no curl) and F = (0, x) (curl 1, no divergence)."""
-    zero = Poly()
-    f1 = d_dz(X)
-    c_div = _ratio(f1, divergence(X, zero))
-    f2 = d_dz(X * I_UNIT)
-    c_curl = _ratio(f2, curl_z(zero, X)) / I_UNIT
-    return DivCurlCoefficients(_real(c_div, "divergence factor"), _real(c_curl, "curl factor"))
 
 
 @dataclass(frozen=True)
@@ -1011,61 +970,6 @@ def quadrupole_relations() -> QuadrupoleRelations:
         potential_divisor_magnitude=anti.divisor_magnitude,
         potential_factor=(f4.coefficient * anti.coefficient) / dphi2.coefficient,
     )
-
-
-@dataclass(frozen=True)
-class InversePotential:
-    """phi = integral of a z^n dz = (a/(n+1)) z^(n+1) for n != -1 (Figs. 10.11, 10.14):
-    ``coefficient`` = a/(n+1), ``normalizer`` = its reciprocal (the book's -2 phi = 1/z^2)."""
-
-    coefficient: Fraction
-    power: int
-    normalizer: Fraction
-
-
-def inverse_power_potential(strength: Any, field_power: Any) -> InversePotential:
-    """The potential of the field a z^n, exact for rational a."""
-    a = Fraction(strength)
-    anti = power_antiderivative(field_power)
-    coefficient = a * anti.coefficient
-    if coefficient == 0:
-        raise ValueError("strength must be non-zero")
-    return InversePotential(coefficient, anti.power, 1 / coefficient)
-
-
-@dataclass(frozen=True)
-class PolarForm:
-    """f = r^q e^(i s k theta) in polar form: ``frequency`` k (the 2 of cos 2 theta),
-    ``phase_sign`` s, ``radius_power`` q."""
-
-    frequency: float
-    phase_sign: int
-    radius_power: float
-
-
-def _polar(func: Callable[[complex], complex], most: int) -> PolarForm:
-    """Read k, s and q off ``func`` = r^q e^(i s k theta), given |k|, |q| <= ``most``.
-
-    The phase is read at theta = 0.3 / most, so that |k theta| <= 0.3 stays clear of the
-    phase's wrap at pi; the power at r = 2^(1/most), where r^q lies in [1/2, 2] (no underflow).
-    """
-    theta, r = 0.3 / most, 2.0 ** (1 / most)
-    value = func(cmath.rect(1.0, theta))
-    k = cmath.phase(value) / theta
-    q = math.log(abs(func(complex(r, 0.0)))) / math.log(r)
-    return PolarForm(abs(k), 1 if k > 0 else -1, q)
-
-
-def inverse_power_polar(power: Any) -> PolarForm:
-    """1/z^n = e^(-i n theta)/r^n: the frequency n of cos n theta and sin n theta."""
-    n = inputs.count(power, "power", minimum=1)
-    return _polar(lambda z: 1 / z**n, n)
-
-
-def conjugate_inverse_power_polar(power: Any) -> PolarForm:
-    """1/z*^n = e^(i n theta)/r^n (the plotted f* of Figs. 10.11, 10.14)."""
-    n = inputs.count(power, "power", minimum=1)
-    return _polar(lambda z: 1 / z.conjugate() ** n, n)
 
 
 def level_line_angle(field_power: Any, x: Any = 7 / 10, y: Any = 4 / 10) -> Numeric:

@@ -444,17 +444,6 @@ def oscillation_period(mass: Any, strength: Any, power: Any, amplitude: Any) -> 
     return 2 * math.pi / n * math.fsum(terms)
 
 
-def harmonic_period_times_frequency(k: Any, mass: Any) -> float:
-    """Period of the Hooke oscillator U = k x^2 / 2 times its angular frequency sqrt(k/m).
-
-    The period comes from ``oscillation_period`` (the turning-point integral), not from the
-    sine: the product is the 2 pi of tau = 2 pi / omega, independent of the amplitude.
-    """
-    inputs.positive(k, "k")
-    inputs.mass(mass, "mass")
-    return oscillation_period(mass, k / 2, 2, 1) * math.sqrt(k / mass)
-
-
 def harmonic_period(omega: Any) -> float:
     """Period of the harmonic oscillator of angular frequency omega, s (after (6.12)).
 
@@ -566,12 +555,6 @@ def same_speed(speed: Any) -> Any:
 def launch_speed(height: Any, g: Any) -> float:
     """Launch speed that tosses a ball to ``height``, V = sqrt(2 g h) (6.13b), m/s."""
     return fall_from_height(height, g).speed
-
-
-def launch_speed_factor(height: Any, g: Any) -> float:
-    """V^2 / (g h) for the toss to ``height``: the 2 under the root of (6.13b)."""
-    speed = launch_speed(height, g)
-    return speed * speed / (float(_gravity(g)) * float(height))
 
 
 # --- bang sequences: the trapped ball (Fig. 6.4), the monster pair (Fig. 6.5) ----------------

@@ -123,14 +123,6 @@ def slope_angle(slope: Any) -> Any:
     return _lib(slope).atan(slope)
 
 
-def percent_grade(angle: Any) -> Any:
-    """Grade of a road climbing at slope angle σ: altitude gained per distance travelled,
-    sin σ, as a fraction (line 1150: percent-grade = 100 sin σ; a claim in percent says so
-    with its unit)."""
-    inputs.real(angle, "angle")
-    return _lib(angle).sin(angle)
-
-
 # -- angles (Fig. 1.3, exercises 1 and 3) ---------------------------------------------------
 def turn_angle(turns: Any) -> Any:
     """The angle of a fraction of a full turn, 2π turns radians (lines 1099-1101: a half turn

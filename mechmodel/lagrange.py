@@ -327,37 +327,6 @@ def hamiltonian_free(masses: Sequence[Any], momenta_: Sequence[Any]) -> Any:
 
 
 @dataclass(frozen=True)
-class ScaledKineticEnergy:
-    """KE = coefficient * m^mass_power * u^coordinate_power in the coordinate u = m^s v."""
-
-    coefficient: Fraction
-    coordinate_power: int
-    mass_power: Fraction
-
-
-def scaled_kinetic_energy(scale_power: Any) -> ScaledKineticEnergy:
-    """The kinetic energy m v^2 / 2 rewritten in the mass-scaled coordinate u = m^s v
-    ((12.1), (12.2)): s = 1/2 gives E(V) = V^2/2 (mass-free), s = 1 gives H(p) = p^2/(2m).
-
-    Computed by substituting v = u m^-s into m v^2/2 with the root mass w = m^(1/2) as the
-    variable, so that half-integer powers of m stay integer powers of w. ``scale_power`` must
-    be a multiple of 1/2.
-    """
-    s = Fraction(scale_power)
-    w_power = 2 * s
-    if w_power.denominator != 1:
-        raise ValueError(f"scale_power must be a multiple of 1/2, got {scale_power!r}")
-    w, u = Laurent.var("w"), Laurent.var("u")
-    lagrangian = w**2 * Laurent.var("v", 2) / 2  # m v^2 / 2 with m = w^2
-    energy = lagrangian.substitute("v", u * w ** (-int(w_power)))
-    return ScaledKineticEnergy(
-        coefficient=energy.only_coefficient(),
-        coordinate_power=energy.power("u"),
-        mass_power=Fraction(energy.power("w"), 2),
-    )
-
-
-@dataclass(frozen=True)
 class RootMassPowers:
     """Powers of the root-mass matrix R = M^(1/2) that map velocities to momenta and back."""
 
@@ -519,28 +488,6 @@ def ellipse_radius_ratio(mass: Any, energy: Any = 1) -> Any:
 # -------------------------------------------------------------------------------------------
 # Legendre contact transformation: (12.10)-(12.13), Figs. 12.2-12.4, 12.9
 # -------------------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class LegendreQuadratic:
-    """Coefficients of the quadratic L and H written with the product v.p (line 13716):
-    L = lagrangian_vp v.p and H = hamiltonian_pv p.v, each H = p.v - L."""
-
-    lagrangian_vp: Fraction
-    hamiltonian_pv: Fraction
-
-
-def legendre_quadratic() -> LegendreQuadratic:
-    """For L(v) = m v^2/2, p = dL/dv (12.10a) is m v, so L = (1/2) v p; the transform
-    H = p v - L (12.11b) is then (1/2) p v as well. Computed symbolically: p by differentiating
-    L, the ratios by dividing by the monomial v p."""
-    m, v = Laurent.var("m"), Laurent.var("v")
-    lagrangian = m * v**2 / 2
-    p = lagrangian.diff("v")
-    hamiltonian = p * v - lagrangian
-    return LegendreQuadratic(
-        lagrangian_vp=(lagrangian / (v * p)).value(), hamiltonian_pv=(hamiltonian / (p * v)).value()
-    )
 
 
 @dataclass(frozen=True)
@@ -1154,37 +1101,6 @@ def polar_hamiltonian(
 
 
 @dataclass(frozen=True)
-class QuadraticHamiltonian:
-    """H = p q' - L for L = M g q'^2/2 - U: H = velocity_coefficient M g q'^2 + U (12.37b) and
-    H = momentum_coefficient p^2 / (M g) + U (12.37c)."""
-
-    velocity_coefficient: Fraction
-    momentum_coefficient: Fraction
-
-
-def quadratic_hamiltonian() -> QuadraticHamiltonian:
-    """(12.37) for one generalized coordinate with metric g: p = dL/dq' = M g q', then
-    H = p q' - L = M g q'^2/2 + U; with q' = p/(M g), H = p^2/(2 M g) + U. Symbolic."""
-    m, g, qd, u, p = (Laurent.var(n) for n in ("M", "g", "qd", "U", "p"))
-    lagrangian = m * g * qd**2 / 2 - u
-    momentum = lagrangian.diff("qd")
-    hamiltonian = (momentum * qd - lagrangian) - u  # the kinetic part
-    in_p = hamiltonian.substitute("qd", p / (m * g))
-    return QuadraticHamiltonian(
-        velocity_coefficient=hamiltonian.coefficient(M=1, g=1, qd=2),
-        momentum_coefficient=in_p.coefficient(M=-1, g=-1, p=2),
-    )
-
-
-def symmetric_form_derivative_factor() -> Fraction:
-    """The 2 of M_ij v^i dv^j/dq = d/dq (M_ij v^i v^j / 2) (line 15022): the q-derivative of
-    the square v^2 is 2 v dv/dq, so the form's derivative carries v dv/dq with the factor 2.
-    Computed as d(v^2)/dv divided by v."""
-    v = Laurent.var("v")
-    return ((v**2).diff("v") / v).value()
-
-
-@dataclass(frozen=True)
 class QuadraticExtremum:
     """For S(q) = q^2 + b q (line 15831): dS/dq = slope q + constant, zero at ``point``."""
 
@@ -1201,11 +1117,6 @@ def quadratic_extremum(linear_coefficient: Any) -> QuadraticExtremum:
     derivative = (q**2 + b * q).diff("q")
     slope, constant = derivative.part("q", 1).only_coefficient(), derivative.part("q", 0).value()
     return QuadraticExtremum(slope=slope, constant=constant, point=-constant / slope)
-
-
-def quadratic_derivative_slope() -> Fraction:
-    """The coefficient of q in d(q^2)/dq (the 2 of 2q, line 15832), by the power rule."""
-    return Laurent.var("q", 2).diff("q").only_coefficient()
 
 
 def gradient_potential(matrix: Sequence[Sequence[Any]], vector: Sequence[Any]) -> Any:

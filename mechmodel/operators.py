@@ -17,7 +17,6 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Any
 
 from mechmodel import inputs
@@ -98,32 +97,6 @@ def collision_matrix(m1: Any, m2: Any) -> Matrix:
     return from_columns(collide(m1, m2, 1, 0).after, collide(m1, m2, 0, 1).after)
 
 
-@dataclass(frozen=True)
-class MassCoefficients:
-    """Each entry of (m1 + m2) M as a m1 + b m2: ``entries[i][j] = (a, b)`` (5.1a)-(5.1b)."""
-
-    entries: tuple[tuple[tuple[Any, Any], tuple[Any, Any]], ...]
-
-
-def collision_matrix_coefficients() -> MassCoefficients:
-    """The integer coefficients of m1 and m2 in (m1 + m2) times the bang matrix (5.1b).
-
-    Each entry of (m1 + m2) M is linear in the masses; its coefficients come from M at the
-    masses (1, 1) and (2, 1): the 1, -1 and 2 of m1 - m2, 2 m2, 2 m1 and m2 - m1.
-    """
-
-    def scaled(m1: int, m2: int) -> Matrix:
-        m = collision_matrix(Fraction(m1), Fraction(m2))  # exact: integer coefficients
-        return tuple(tuple((m1 + m2) * x for x in row) for row in m)  # type: ignore[return-value]
-
-    one, two = scaled(1, 1), scaled(2, 1)
-    entries = tuple(
-        tuple((two[i][j] - one[i][j], 2 * one[i][j] - two[i][j]) for j in range(2))
-        for i in range(2)
-    )
-    return MassCoefficients(entries)  # type: ignore[arg-type]
-
-
 def ceiling_matrix() -> Matrix:
     """The ceiling bounce C of (5.3): (v1, v2) -> (v1, -v2), from the bounce itself."""
     return from_columns((1, ceiling_bounce(0)), (0, ceiling_bounce(1)))
@@ -188,14 +161,6 @@ def bang_angle(m1: Any, m2: Any) -> BangAngle:
 def multiple_bang_angle(m1: Any, m2: Any, n: int) -> float:
     """N theta: the angle n double bangs turn the V-space clock hand through (5.13)."""
     return inputs.count(n, "n") * bang_angle(m1, m2).angle
-
-
-def scaled_bang_coefficient() -> Any:
-    """The 2 of 2 sqrt(m1 m2)/M in the V-space bang matrix (5.9)-(5.10a).
-
-    Read off the off-diagonal entry at the masses (1, 4), where sqrt(m1 m2)/M = 2/5.
-    """
-    return scaled_collision_matrix(1, 4)[0][1] * 5 / 2
 
 
 @dataclass(frozen=True)
@@ -313,11 +278,6 @@ def mirror_pair_rotation(first_mirror: Any, second_mirror: Any) -> float:
     (Fig. 5.3d-e, the clothing-store mirrors of Fig. 5.4).
     """
     return product_rotation_angle(reflection(2 * second_mirror), reflection(2 * first_mirror))
-
-
-def mirror_angle_ratio(phi: Any) -> Any:
-    """phi over the mirror angle of sigma_phi: the 2 of 'a mirror plane tilted at phi/2'."""
-    return phi / mirror_angle(reflection(phi))
 
 
 def reflection_mirror_angle(phi: Any) -> float:

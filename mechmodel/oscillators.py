@@ -162,11 +162,6 @@ def orbit_velocity(a: Any, b: Any, omega: Any, t: Any) -> Vector:
     return orbit_derivative(a, b, omega, t, 1)
 
 
-def derivative_omega_power(order: Any) -> int:
-    """The power of w in the ``order``-th derivative of the orbit ((11.5b)-(11.5d))."""
-    return orbit_derivative_form(order).omega_power
-
-
 def derivative_phase(order: Any) -> float:
     """Phase advance, radians in [0, 2 pi), of the ``order``-th derivative scaled by w^-n over
     r: r^(n)(t)/w^n = (a cos(wt + d), b sin(wt + d)) ((11.6), Fig. 11.5). Read off the
@@ -284,13 +279,6 @@ def areal_velocity(a: Any, b: Any, omega: Any) -> float:
     return orbit_area(a, b) / orbit_period(omega)
 
 
-def area_law_coefficient(a: Any, b: Any, omega: Any, t: Any = 0) -> float:
-    """Areal velocity over |r x v| at time t: the 1/2 of dA = 1/2 |r x v| dt (text after
-    Fig. 11.8)."""
-    rv = cross(orbit_position(a, b, omega, t), orbit_velocity(a, b, omega, t))
-    return areal_velocity(a, b, omega) / abs(rv)
-
-
 def area_swept(angular_momentum: Any, mass: Any, dt: Any) -> float:
     """Area swept in the time dt by the radius vector of a mass m of orbital angular momentum L
     (text after Fig. 11.8, Kepler's equal areas): it depends on L/m = |r x v| alone (11.22), so
@@ -335,16 +323,6 @@ def oscillator_frequency(k: Any, mass: Any) -> Any:
     inputs.positive(k, "k")
     inputs.mass(mass)
     return exact_sqrt(_div(k, mass))
-
-
-def spring_constant_omega_power() -> int:
-    """The power p of k = m w^p (11.2b): solving (11.2a) for k. Search the factor 2^p by which
-    k must grow to double w (exact arithmetic)."""
-    base = oscillator_frequency(1, 1)
-    for p in range(8):
-        if oscillator_frequency(2**p, 1) == 2 * base:
-            return p
-    raise ValueError("no power of 2 doubles the frequency")  # pragma: no cover
 
 
 def spring_constant(mass: Any, omega: Any) -> Any:
@@ -485,27 +463,6 @@ def ellipse_form(a: Any, b: Any) -> Matrix:
 def form_value(matrix: Matrix, vector: Sequence[Any]) -> Any:
     """The quadratic form r.M.r (11.7), (11.20)."""
     return dot(vector, apply(matrix, vector))
-
-
-@dataclass(frozen=True)
-class FormExpansion:
-    """r.M.r = xx x^2 + xy x y + yy y^2 for M = (A B; B C); ``cross_factor`` = xy/B."""
-
-    xx: Any
-    xy: Any
-    yy: Any
-    cross_factor: Any
-
-
-def form_expansion(A: Any, B: Any, C: Any) -> FormExpansion:  # noqa: N803 - the book's names
-    """Expand (x y).(A B; B C).(x y) (11.20) by evaluating the form on (1,0), (0,1) and (1,1):
-    the xy coefficient is f(1,1) - f(1,0) - f(0,1) (2B: both off-diagonal entries contribute)."""
-    m = ((A, B), (B, C))
-    xx, yy = form_value(m, (1, 0)), form_value(m, (0, 1))
-    xy = form_value(m, (1, 1)) - xx - yy
-    if B == 0:
-        raise ValueError("B must be nonzero to read the factor of B")
-    return FormExpansion(xx, xy, yy, _div(xy, B))
 
 
 def quadratic_form(A: Any, B: Any, C: Any, x: Any, y: Any) -> Any:  # noqa: N803
@@ -714,19 +671,6 @@ def slope_gain(a: Any, b: Any, power: Any) -> Any:
     operator = matrix_power(slope_operator(a, b), power)
     x, y = apply(operator, (1, 1))
     return _div(y, x)
-
-
-def slope_gain_exponent(a: Any, b: Any, power: Any) -> int:
-    """The integer n with slope gain (a/b)^n for R^power: tan(phi_k+1) = (a/b)^2 tan(phi_k-1)
-    for Q (11.16). Needs rational a != b."""
-    if not _rational(a, b) or a == b:
-        raise ValueError("a and b must be distinct rationals")
-    gain = slope_gain(a, b, power)
-    ratio = Fraction(a) / Fraction(b)
-    for n in range(-16, 17):
-        if ratio**n == gain:
-            return n
-    raise ValueError("the gain is no power of a/b")  # pragma: no cover
 
 
 @dataclass(frozen=True)

@@ -21,16 +21,13 @@ the energy is read off from how the energy grows when r doubles.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
 from mechmodel import inputs
 
-# sample values for reading off the form of a formula: distinct primes, exact
-_SAMPLE_MASS = Fraction(3)
-_SAMPLE_RADIUS = Fraction(5)
+# a sample angular velocity, exact: I = L/w does not depend on it
 _SAMPLE_OMEGA = Fraction(7)
 
 
@@ -40,17 +37,6 @@ def _rational(*values: Any) -> bool:
 
 def _div(x: Any, y: Any) -> Any:
     return Fraction(x) / Fraction(y) if _rational(x, y) else x / y
-
-
-def power_of(law: Callable[..., Any], name: str, **values: Any) -> int:
-    """The exponent n of ``name`` in a monomial law: law(name = 2x) / law(name = x) = 2^n,
-    found with exact arithmetic (an error if the ratio is no integer power of 2)."""
-    doubled = dict(values, **{name: 2 * values[name]})
-    ratio = Fraction(law(**doubled)) / Fraction(law(**values))
-    for n in range(-8, 9):
-        if Fraction(2) ** n == ratio:
-            return n
-    raise ValueError(f"{name} does not enter as a power")
 
 
 # -- a point mass on a circle (11.23)-(11.24) ---------------------------------------------------
@@ -89,49 +75,6 @@ def inertia_energy(inertia: Any, omega: Any) -> Any:
     return rotation_energy(_div(inertia, unit), 1, omega)
 
 
-@dataclass(frozen=True)
-class RotationForm:
-    """The form of a point mass's rotational energy and angular momentum (11.23)-(11.24):
-    E = energy_coefficient m^energy_mass_power r^energy_radius_power w^energy_omega_power,
-    E = inertia_coefficient I w^inertia_omega_power, L = m r^momentum_radius_power
-    w^momentum_omega_power, I = m r^inertia_radius_power."""
-
-    energy_coefficient: Fraction
-    energy_mass_power: int
-    energy_radius_power: int
-    energy_omega_power: int
-    inertia_coefficient: Fraction
-    inertia_omega_power: int
-    momentum_radius_power: int
-    momentum_omega_power: int
-    inertia_radius_power: int
-
-
-def rotation_form() -> RotationForm:
-    """Read the exponents and coefficients of (11.23)-(11.24) off the physics at exact sample
-    values: substitute V = w r into 1/2 m V^2 and m V r."""
-    m, r, w = _SAMPLE_MASS, _SAMPLE_RADIUS, _SAMPLE_OMEGA
-    sample = {"mass": m, "radius": r, "omega": w}
-    e_powers = [power_of(rotation_energy, name, **sample) for name in ("mass", "radius", "omega")]
-    l_powers = [power_of(point_angular_momentum, name, **sample) for name in ("radius", "omega")]
-    energy = Fraction(rotation_energy(m, r, w))
-    inertia = point_inertia(m, r)
-    e_coefficient = energy / (m ** e_powers[0] * r ** e_powers[1] * w ** e_powers[2])
-
-    def energy_of_inertia(omega: Any) -> Any:
-        return rotation_energy(m, r, omega) / inertia
-
-    i_power = power_of(energy_of_inertia, "omega", omega=w)
-    return RotationForm(
-        e_coefficient,
-        *e_powers,
-        energy / (inertia * w**i_power),
-        i_power,
-        *l_powers,
-        power_of(point_inertia, "radius", mass=m, radius=r),
-    )
-
-
 # -- rods (11.25) -------------------------------------------------------------------------------
 def rod_inertia_about_end(density: Any, length: Any) -> Any:
     """I = integral from 0 to l of rho r^2 dr (11.25): the antiderivative of rho r^2 is
@@ -148,34 +91,6 @@ def rod_inertia_of_mass(mass: Any, length: Any) -> Any:
     inputs.mass(mass)
     inputs.positive(length, "length")
     return rod_inertia_about_end(_div(mass, length), length)
-
-
-@dataclass(frozen=True)
-class RodInertiaForm:
-    """I = density_coefficient rho l^density_length_power = mass_coefficient M l^mass_length_power
-    for a uniform rod about one end (11.25)."""
-
-    density_coefficient: Fraction
-    density_length_power: int
-    mass_coefficient: Fraction
-    mass_length_power: int
-
-
-def rod_inertia_form() -> RodInertiaForm:
-    """Read (11.25) off the integral at exact sample values: the power of l at fixed rho, then
-    at fixed M = rho l."""
-    rho, length = _SAMPLE_MASS, _SAMPLE_RADIUS
-    p_rho = power_of(rod_inertia_about_end, "length", density=rho, length=length)
-
-    def at_fixed_mass(mass: Any, length: Any) -> Any:
-        return rod_inertia_about_end(_div(mass, length), length)
-
-    mass = rho * length
-    p_mass = power_of(at_fixed_mass, "length", mass=mass, length=length)
-    inertia = Fraction(rod_inertia_about_end(rho, length))
-    return RodInertiaForm(
-        inertia / (rho * length**p_rho), p_rho, inertia / (mass * length**p_mass), p_mass
-    )
 
 
 def free_rod_inertia(mass: Any, half_length: Any) -> Any:
@@ -221,12 +136,6 @@ def percussion_radius(half_length: Any, hit_height: Any) -> Any:
     return rod_impulse(1, half_length, 1, hit_height).percussion_radius
 
 
-def percussion_divisor(half_length: Any, hit_height: Any) -> Any:
-    """l/p: the rod's half-length over the percussion radius (3 for a hit at the end, h = l,
-    p = l/3: its minimum, text after Fig. 11.10)."""
-    return _div(half_length, percussion_radius(half_length, hit_height))
-
-
 def percussion_fraction(half_length: Any, hit_divisor: Any) -> Any:
     """p/l for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/2 gives p = 2l/3)."""
     inputs.positive(hit_divisor, "hit_divisor")
@@ -246,11 +155,6 @@ def radius_of_gyration(rod_length: Any) -> float:
     inputs.positive(rod_length, "rod_length")
     half = _div(rod_length, 2)
     return math.sqrt(free_rod_inertia(1, half))
-
-
-def gyration_divisor(rod_length: Any) -> float:
-    """l over the radius of gyration (the sqrt(3) of p = l/sqrt(3), text after Fig. 11.10)."""
-    return _div(rod_length, 2) / radius_of_gyration(rod_length)
 
 
 def sweet_spot(half_length: Any) -> float:

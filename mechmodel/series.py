@@ -178,48 +178,6 @@ def exp_remainder_bound(x: Any, order: Any) -> Any:
         return next_term * (exponential(x) if x > 0 else 1)
 
 
-def exp_min_order(x: Any, tolerance: Any) -> int:
-    """Smallest order o whose partial sum is within ``tolerance`` of e^x (actual error)."""
-    inputs.real(x, "x")
-    inputs.positive(tolerance, "tolerance")
-    order = 0
-    with mpmath.workdps(DIGITS):
-        target = exponential(x)
-        while abs(_mp(exp_partial_sum(Fraction(x), order, exact=True)) - target) > tolerance:
-            order += 1
-    return order
-
-
-@dataclass(frozen=True)
-class ExpDerivativeTerm:
-    """d/dt of the term r^k t^k / k! of e^(r t) (10.9): ``numerator`` k over ``factorial`` k!,
-    times r^``r_power`` t^``t_power``; ``reduced_factorial`` j of the equal 1/j!."""
-
-    numerator: int
-    factorial: int
-    reduced_factorial: int
-    r_power: int
-    t_power: int
-
-
-def exp_series_derivative_term(power: Any) -> ExpDerivativeTerm:
-    """Derivative of the k-th e-series term r^k t^k / k! by the power rule (10.8b), (10.9).
-
-    The power rule gives k r^k t^(k-1) / k!; dividing k out of k! leaves 1/(k-1)!, the term
-    r times the (k-1)-th term: d/dt e^(r t) = r e^(r t).
-    """
-    k = inputs.count(power, "power", minimum=1)
-    rule = power_rule(k)
-    coefficient = rule.factor * exp_series_coefficient(k)
-    return ExpDerivativeTerm(
-        numerator=rule.factor,
-        factorial=exp_series_factorial(k),
-        reduced_factorial=inverse_factorial(1 / coefficient),
-        r_power=k,
-        t_power=rule.power,
-    )
-
-
 def exp_series_polynomial(rate: Any, time: Any, order: Any) -> Any:
     """The e-series (10.5a) of e^(r t) cut after its (r t)^``order`` term: sum_k c_k (r t)^k,
     the coefficients c_k those of the binomial limit (``exp_series_coefficient``: counted with
@@ -269,13 +227,6 @@ def log_potential_force(y: Any) -> float:
     slope of U by a difference quotient at high precision (it is 1/y)."""
     inputs.positive(y, "y")
     return float(-_log_potential_slope(y))
-
-
-def log_potential_force_moment(y: Any) -> float:
-    """y F(y) for the force F = -dU/dy of the log potential U = -ln y (Fig. 10.1c): the
-    numerator of F(y) = 1/y, computed from the slope of U."""
-    inputs.positive(y, "y")
-    return float(-_log_potential_slope(y) * _mp(Fraction(y)))
 
 
 def log_potential_normal_angle(y: Any) -> float:
@@ -490,11 +441,6 @@ def binomial_box_product(x: Any, y: Any, top_power: Any) -> Any:
     return binomial_box_row(x, y, top_power, "x") + binomial_box_row(x, y, top_power, "y")
 
 
-def binomial_box_expansion(top_power: Any) -> list[int]:
-    """Coefficients of the box product (x + y)^n (x + y) with the top row (x + y)^n (2)-(5)."""
-    return binomial_expansion(binomial_box_power(top_power))
-
-
 def pascal_row_length(n: Any) -> int:
     """Number of entries ("spots") of row n of Pascal's triangle."""
     n = inputs.count(n, "n")
@@ -544,30 +490,6 @@ def falling_factors(n: Any, k: Any) -> list[int]:
 def falling_factors_pq(p: Any, q: Any) -> list[int]:
     """The factors of (p + q)!/q!, largest first: 10!/(2! 8!) = 10 * 9 / 2 (after (9))."""
     return falling_factors(inputs.count(p, "p") + inputs.count(q, "q"), p)
-
-
-@dataclass(frozen=True)
-class BinomialPolynomial:
-    """B(n, k) as a polynomial in n: n(n-1)...(n-k+1)/k!. ``roots`` 0..k-1 (where no k things
-    can be chosen), ``offsets`` their negatives (the -1 of n - 1), ``factorial`` the j of 1/j!."""
-
-    roots: list[int]
-    offsets: list[int]
-    factorial: int
-
-
-def binomial_polynomial(k: Any) -> BinomialPolynomial:
-    """The general binomial coefficient of x^(n-k) y^k in (x + y)^n (the expansion after (10.4)).
-
-    Computed from counts: B(n, k) for n = 0..k by Pascal's rule; its roots are the n where it
-    vanishes, its leading coefficient 1/j! gives the factorial.
-    """
-    k = inputs.count(k, "k")
-    triangle = pascal_triangle(k)
-    counts = [row[k] if k < len(row) else 0 for row in triangle]
-    roots = [n for n, c in enumerate(counts) if c == 0]
-    lead = _leading_coefficient([Fraction(c) for c in counts])
-    return BinomialPolynomial(roots, [-r for r in roots], inverse_factorial(1 / lead))
 
 
 def gaussian_exponent_coefficient(n: Any) -> Fraction:
@@ -734,22 +656,6 @@ def maclaurin_polynomial(derivatives: list[Any], t: Any) -> Any:
     j(0), ...): sum_k x^(k)(0) t^k / D_k, with the divisors D_k of (10.11) found by applying the
     power rule k times (``maclaurin_divisor``). Plain operators: symbols give an expression."""
     return sum((Fraction(1, maclaurin_divisor(k)) * d * t**k for k, d in enumerate(derivatives)), 0)
-
-
-@dataclass(frozen=True)
-class FallingFactorial:
-    """The factor n(n-1)...(n-d+1) of the general term after d derivatives of c_n t^n:
-    ``roots`` 0..d-1 (the powers the d-th derivative kills), ``offsets`` their negatives."""
-
-    roots: list[int]
-    offsets: list[int]
-
-
-def falling_factorial(derivative: Any) -> FallingFactorial:
-    """Roots of the d-th derivative factor of t^n as a function of n (10.11c)-(10.11i)."""
-    d = inputs.count(derivative, "derivative")
-    roots = [n for n in range(d + 1) if derivative_term(n, d).factor == 0]
-    return FallingFactorial(roots, [-r for r in roots])
 
 
 # ----------------------------------------------------------------------------------------------
@@ -1003,22 +909,6 @@ def clockwise_angle(angle: Any = 0, pi_multiple: Any = 0) -> float:
     return cmath.phase(unit_phasor(phi).conjugate()) % (2 * math.pi)
 
 
-@dataclass(frozen=True)
-class EulerInverse:
-    """cos theta = (e^(i theta) + e^(-i theta))/``cos_denominator`` and
-    sin theta = (e^(i theta) - e^(-i theta))/``sin_denominator`` (10.20b)."""
-
-    cos_denominator: complex
-    sin_denominator: complex
-
-
-def euler_inverse(theta: Any) -> EulerInverse:
-    """Solve (10.20b) for its denominators at an angle theta (not a multiple of pi/2)."""
-    inputs.real(theta, "theta")
-    plus, minus = unit_phasor(theta), unit_phasor(-float(theta))
-    return EulerInverse((plus + minus) / math.cos(theta), (plus - minus) / math.sin(theta))
-
-
 def phasor_modulus(x: Any, y: Any) -> float:
     """The modulus r = A = |psi| of the phasor with Cartesian parts psi_x = ``x``, psi_y = ``y``
     (the polar form of (10.19b), Fig. 10.5): the radius of x + i y in polar coordinates."""
@@ -1067,34 +957,8 @@ def unit_circle_radius(samples: Any = 12) -> float:
     return max(abs(unit_phasor(2 * math.pi * j / n)) for j in range(n))
 
 
-@dataclass(frozen=True)
-class CosineLaw:
-    """|z + z'|^2 = r^2 + r'^2 + ``sum_coefficient`` r r' cos(phi - phi') and
-    |z - z'|^2 = r^2 + r'^2 - ``difference_coefficient`` r r' cos(phi - phi') (10.25)."""
-
-    sum_coefficient: float
-    difference_coefficient: float
-
-
-def cosine_law(r1: Any, phi1: Any, r2: Any, phi2: Any) -> CosineLaw:
-    """Solve the cosine laws (10.25) for their coefficients from z = r e^(i phi) at one pair."""
-    z1 = float(r1) * unit_phasor(phi1)
-    z2 = float(r2) * unit_phasor(phi2)
-    base = float(r1) ** 2 + float(r2) ** 2
-    scale = float(r1) * float(r2) * math.cos(float(phi1) - float(phi2))
-    if scale == 0:
-        raise ValueError("cos(phi - phi') = 0: the coefficient is undetermined")
-    return CosineLaw((abs(z1 + z2) ** 2 - base) / scale, (base - abs(z1 - z2) ** 2) / scale)
-
-
 def rotate(x: Any, y: Any, angle: Any) -> tuple[float, float]:
     """The 2-D rotation of (x, y) by ``angle`` as the complex product e^(i phi)(x + i y)
     (10.27a): (x cos phi - y sin phi, x sin phi + y cos phi)."""
     z = unit_phasor(angle) * complex(float(x), float(y))
     return z.real, z.imag
-
-
-def rotation_matrix(angle: Any) -> list[list[float]]:
-    """The 2-by-2 rotation matrix R_phi of (10.27c), rows (cos, -sin), (sin, cos)."""
-    c, s = math.cos(float(angle)), math.sin(float(angle))
-    return [[c, -s], [s, c]]

@@ -46,7 +46,6 @@ from mechmodel.bangs import (
     galileo_shifted_collision,
     game_over_bang,
     mass_ratio,
-    sagitta_denominator,
     sagitta_small_spot_depth,
     state_after_bangs,
     velocities_after_bang,
@@ -473,20 +472,6 @@ def test_the_earth_takes_a_share_m_over_m_of_a_bounce(
         assert recoil.energy_fraction == share
     assert earth_recoil(earth, m).energy_fraction == recoil.energy_fraction
     assert recoil.energy_fraction <= Fraction(1, 4)
-
-
-@given(
-    st.floats(min_value=-3, max_value=3).map(lambda k: 10.0**k),
-    st.floats(min_value=1e-3, max_value=0.999),
-)
-def test_the_flat_spot_depth_tends_to_r2_over_2_r(radius: float, spot: float) -> None:
-    """A flat spot of radius r on a ball of radius R lies d = R - sqrt(R^2 - r^2) deep, so
-    r^2/(R d) = 1 + sqrt(1 - (r/R)^2), the 2 of the sagittal d = r^2/(2R) for r << R
-    (Fig. 4.1); it depends on r/R alone."""
-    k = sagitta_denominator(spot * radius, radius)
-    assert math.isclose(k, 1 + math.sqrt(1 - spot * spot), rel_tol=1e-9)
-    with pytest.raises(ValueError, match="smaller"):
-        sagitta_denominator(radius, radius)
 
 
 @given(

@@ -267,39 +267,6 @@ def test_the_loop_scan_stays_where_its_rule_is_exact(lowest: int, highest: int) 
         cf.nonzero_loop_powers(lowest, highest)
 
 
-@given(small_fractions(), field_powers().map(lambda n: -2 if n == -1 else n))  # n != -1
-@example(Fraction(3), 2)  # strength n + 1: the potential z^3 itself
-@example(Fraction(1), -3)  # the book's -2 phi = 1/z^2 (Fig. 10.14)
-@example(Fraction(0), 1)
-def test_the_inverse_power_potential_differentiates_back_to_its_field(a: Fraction, n: int) -> None:
-    """phi = (a/(n+1)) z^(n+1) is the potential of the field a z^n: d phi/dz = a z^n (10.35a),
-    and its normalizer is the reciprocal of its coefficient (-2 phi = 1/z^2 for the field 1/z^3,
-    Figs. 10.11, 10.14); a zero strength has no potential to normalize."""
-    if a == 0:
-        with pytest.raises(ValueError, match="strength"):
-            cf.inverse_power_potential(a, n)
-        return
-    phi = cf.inverse_power_potential(a, n)
-    back = cf.laurent_derivative(phi.coefficient, phi.power)
-    assert (back.coefficient, back.power) == (a, n)
-    assert phi.normalizer * phi.coefficient == 1
-
-
-@given(st.integers(1, 2000))
-@example(11)  # the first power whose phase wrapped at the old fixed angle theta = 0.3
-@example(2000)
-def test_inverse_powers_have_frequency_n_and_fall_off_as_r_to_the_minus_n(n: int) -> None:
-    """1/z^n = e^(-i n theta)/r^n and its conjugate 1/z*^n = e^(i n theta)/r^n (Figs. 10.11,
-    10.14): both have the frequency n of cos n theta and sin n theta, their phases turn in
-    opposite senses, and both fall off as r^-n."""
-    f, g = cf.inverse_power_polar(n), cf.conjugate_inverse_power_polar(n)
-    assert close(f.frequency, n, 1e-12 * n)
-    assert close(g.frequency, n, 1e-12 * n)
-    assert (f.phase_sign, g.phase_sign) == (-1, 1)
-    assert close(f.radius_power, -n, 1e-12 * n)
-    assert close(g.radius_power, -n, 1e-12 * n)
-
-
 @pytest.mark.parametrize("k", range(8))
 def test_each_z_derivative_doubles_the_sources(k: int) -> None:
     """A 2^k-pole built by k (-)copies of a unit 1-pole has 2^k distinct sources of strength

@@ -142,8 +142,6 @@ def test_harmonic_period_does_not_depend_on_amplitude(k: float, m: float, a: flo
     """The Hooke oscillator's period is 2 pi / omega whatever the amplitude (after (6.12))."""
     period = forces.oscillation_period(m, k / 2, 2, a)
     assert math.isclose(period * math.sqrt(k / m), 2 * math.pi, rel_tol=16 * REL)
-    product = forces.harmonic_period_times_frequency(k, m)
-    assert math.isclose(product, 2 * math.pi, rel_tol=16 * REL)
 
 
 @given(positive_quantities(), well_powers(), positive_quantities())
@@ -186,7 +184,6 @@ def test_toss_height_and_launch_speed_agree(v: Fraction, g: Fraction) -> None:
     h = forces.toss_height(v, g)
     assert g * h == v * v / 2
     assert math.isclose(forces.launch_speed(h, g), v, rel_tol=4 * REL)
-    assert math.isclose(forces.launch_speed_factor(h, g), 2, rel_tol=4 * REL)
     fall = forces.fall_from_height(h, g)  # the toss backwards: from rest, h = g t^2 / 2
     assert math.isclose(float(g) * fall.time * fall.time / 2, h, rel_tol=8 * REL)
     assert math.isclose(fall.speed, float(g) * fall.time, rel_tol=4 * REL)

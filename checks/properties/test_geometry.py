@@ -44,7 +44,6 @@ from mechmodel.geometry import (
     hypotenuse,
     minkowski_slope,
     newton_slope,
-    percent_grade,
     precision_parts,
     principal_range,
     quadrant_fraction,
@@ -168,15 +167,6 @@ def test_tangent_line_is_normal_to_the_radius(sigma: float) -> None:
 def test_slope_angle_has_the_slope_for_tangent(m: float) -> None:
     """tan(arctan m) = m: the slope angle of a slope-m line (line 934: 45° for slope 1/1)."""
     assert close(math.tan(slope_angle(m)), m)
-
-
-@given(slopes())
-def test_grade_is_slope_over_incline(m: float) -> None:
-    """Percent grade 100 sin σ of a road of slope m = tan σ is 100 m / √(1 + m^2): altitude
-    gained over distance travelled (line 1150), never above 100 %."""
-    grade = percent_grade(slope_angle(m))
-    assert close(grade, m / math.sqrt(1 + m * m), 1.0)
-    assert abs(grade) <= 1
 
 
 # -- arc functions and their two solutions (Fig. 1.7) ------------------------------------------

@@ -544,26 +544,6 @@ def test_common_speed_is_the_speed_of_every_fragment(speed: float, angles: list[
         lagrange.common_speed([(speed, 0.0), (0.0, speed * 1.01)])
 
 
-@given(st.integers(min_value=-6, max_value=6), exact_masses(), exact_velocities())
-@example(1, Fraction(2), Fraction(3))  # s = 1/2: E(V) = V^2/2 has no mass (12.5)
-@example(2, Fraction(2), Fraction(3))  # s = 1: H(p) = p^2/(2m) (12.4)
-def test_scaled_kinetic_energy_is_the_same_energy(twice_s: int, m: Fraction, v: Fraction) -> None:
-    """m v^2 / 2 rewritten in u = m^s v ((12.1), (12.2)) is c u^k m^q with c = 1/2, k = 2 and
-    q = 1 - 2s, the same number for every mass and velocity (s = 1/2: E(V) = V^2/2; s = 1:
-    H(p) = p^2/(2m)); checked with s a multiple of 1/2 and m a perfect square, exactly. Other
-    s are refused."""
-    s = Fraction(twice_s, 2)
-    form = lagrange.scaled_kinetic_energy(s)
-    root = m  # the mass is root^2, so m^s = root^(2s) stays rational
-    mass = root * root
-    u = root**twice_s * v
-    rebuilt = form.coefficient * u**form.coordinate_power * root ** int(2 * form.mass_power)
-    assert rebuilt == lagrange.kinetic_energy([mass], [v]) == mass * v * v / 2
-    assert form.mass_power == 1 - 2 * s
-    with pytest.raises(ValueError, match="multiple of 1/2"):
-        lagrange.scaled_kinetic_energy(s + Fraction(1, 3))
-
-
 # -- formula models of chapter 12: energies, Legendre pair, root mass --------------------------
 
 

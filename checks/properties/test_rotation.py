@@ -37,16 +37,6 @@ def test_point_mass_energy_and_momentum_take_angular_form(
     assert rotation.point_angular_momentum(m, r, w) == inertia * w
 
 
-def test_rotation_form_reads_the_book_formulas() -> None:
-    """The exponents and coefficients read off the physics are those of (11.23)-(11.24):
-    KE = 1/2 m r^2 w^2 = 1/2 I w^2, L = m r^2 w, I = m r^2."""
-    form = rotation.rotation_form()
-    assert form.energy_coefficient == Fraction(1, 2) == form.inertia_coefficient
-    assert (form.energy_mass_power, form.energy_radius_power, form.energy_omega_power) == (1, 2, 2)
-    assert (form.momentum_radius_power, form.momentum_omega_power) == (2, 1)
-    assert (form.inertia_omega_power, form.inertia_radius_power) == (2, 2)
-
-
 @given(exact_radii(), exact_radii(), riemann_steps())
 @example(Fraction(1), Fraction(1), 1)
 def test_rod_inertia_is_the_limit_of_slices(rho: Fraction, length: Fraction, n: int) -> None:
@@ -56,14 +46,6 @@ def test_rod_inertia_is_the_limit_of_slices(rho: Fraction, length: Fraction, n: 
     midpoint_sum = sum(rho * ((k + Fraction(1, 2)) * dr) ** 2 * dr for k in range(n))
     integral = rotation.rod_inertia_about_end(rho, length)
     assert integral - midpoint_sum == rho * length**3 / (12 * n * n)
-
-
-def test_rod_inertia_form_reads_the_book_formula() -> None:
-    """The coefficients and exponents read off the integral are those of (11.25):
-    I = rho l^3/3 = M l^2/3 for a uniform rod about one end."""
-    form = rotation.rod_inertia_form()
-    assert (form.density_coefficient, form.density_length_power) == (Fraction(1, 3), 3)
-    assert (form.mass_coefficient, form.mass_length_power) == (Fraction(1, 3), 2)
 
 
 @given(exact_radii(), exact_radii())
@@ -87,7 +69,6 @@ def test_the_percussion_point_is_at_rest(
     assert response.cm_velocity - response.angular_velocity * response.percussion_radius == 0
     assert response.hit_percussion_product == half * half / 3
     assert response.product_coefficient == Fraction(1, 3)  # h p / l^2, whatever l and h
-    assert rotation.percussion_divisor(half, h) == 3 * hit
     assert rotation.percussion_fraction(half, 1 / hit) == 1 / (3 * hit)  # p/l = l/(3h)
 
 
@@ -99,7 +80,6 @@ def test_sweet_spot_is_the_radius_of_gyration(half: Fraction) -> None:
     gyration = rotation.radius_of_gyration(2 * half)
     assert abs(spot - gyration) <= 1e-9 * float(half)
     assert abs(gyration * math.sqrt(3) - float(half)) <= REL * float(half)
-    assert abs(rotation.gyration_divisor(2 * half) - math.sqrt(3)) <= REL
 
 
 @given(exact_radii(), hit_fractions(), orbit_fractions())
