@@ -15,6 +15,7 @@ import pytest
 from hypothesis import assume, example, given, target
 from hypothesis import strategies as st
 
+from checks.properties.closeness import assert_close
 from checks.properties.strategies import (
     angles,
     exact_masses,
@@ -192,11 +193,6 @@ def test_a_wall_keeps_its_velocity(u: float, v: float, e: float, m: float) -> No
     assert hit.com_velocity == mirrored.com_velocity == u
 
 
-def close(a: float, b: float, scale: float) -> bool:
-    """a and b agree within REL of ``scale``, the sum of the magnitudes involved (or FLOOR)."""
-    return abs(a - b) <= REL * scale + FLOOR
-
-
 def F(*values: int) -> tuple[Fraction, ...]:
     """Exact book values for @example."""
     return tuple(Fraction(v) for v in values)
@@ -234,8 +230,8 @@ def test_a_collision_is_galilean_covariant(
     shifted_first = collide(m1, m2, v1 + u, v2 + u, e)
     hit = collide(m1, m2, v1, v2, e)
     scale = abs(v1) + abs(v2) + 2 * abs(u) + abs(hit.v1) + abs(hit.v2)
-    assert close(shifted_first.v1, hit.v1 + u, scale)
-    assert close(shifted_first.v2, hit.v2 + u, scale)
+    assert_close(shifted_first.v1, hit.v1 + u, scale=scale, abs=FLOOR)
+    assert_close(shifted_first.v2, hit.v2 + u, scale=scale, abs=FLOOR)
 
 
 @given(
@@ -295,8 +291,13 @@ def test_the_com_velocity_of_a_bounce_undoes_the_bounce(v: float, u: float) -> N
     """The frame velocity found from (v_in, v_fin) is the one that gives v_fin back (floats,
     to rounding): the two functions are inverse in their second argument."""
     fin = elastic_final_velocity(v, u)
-    assert close(elastic_com_velocity(v, fin), u, 4 * (abs(v) + abs(u)))
-    assert close(elastic_final_velocity(v, elastic_com_velocity(v, u)), u, 4 * (abs(v) + abs(u)))
+    assert_close(elastic_com_velocity(v, fin), u, scale=4 * (abs(v) + abs(u)), abs=FLOOR)
+    assert_close(
+        elastic_final_velocity(v, elastic_com_velocity(v, u)),
+        u,
+        scale=4 * (abs(v) + abs(u)),
+        abs=FLOOR,
+    )
 
 
 @given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_restitutions())
@@ -329,12 +330,12 @@ def test_the_ellipse_forms_are_one_on_the_ellipse(
     with M = diag(1/a^2, 1/b^2)."""
     ke = kinetic_energy((m1, m2), (v1, v2))
     assume(ke > 0)
-    assert close(energy_ellipse_form(m1, m2, ke, v1, v2), 1, 4)
+    assert_close(energy_ellipse_form(m1, m2, ke, v1, v2), 1, scale=4, abs=FLOOR)
     a, b = ellipse_radii(m1, m2, ke)
     x, y = ellipse_point(a, b, angle)
-    assert close(energy_ellipse_form(m1, m2, ke, x, y), 1, 8)
-    assert close(ellipse_tensor_form(x, y, a, b), 1, 8)
-    assert close(ellipse_tensor_form(v1, v2, a, b), 1, 8)
+    assert_close(energy_ellipse_form(m1, m2, ke, x, y), 1, scale=8, abs=FLOOR)
+    assert_close(ellipse_tensor_form(x, y, a, b), 1, scale=8, abs=FLOOR)
+    assert_close(ellipse_tensor_form(v1, v2, a, b), 1, scale=8, abs=FLOOR)
 
 
 @given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_masses())
@@ -378,8 +379,8 @@ def test_an_elastic_collision_is_time_reversible(
     hit = collide(m1, m2, v1, v2)
     again = collide(m1, m2, -hit.v1, -hit.v2)
     scale = 2 * (abs(v1) + abs(v2) + abs(hit.v1) + abs(hit.v2))
-    assert close(again.v1, -v1, scale)
-    assert close(again.v2, -v2, scale)
+    assert_close(again.v1, -v1, scale=scale, abs=FLOOR)
+    assert_close(again.v2, -v2, scale=scale, abs=FLOOR)
 
 
 @given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities(), exact_restitutions())
@@ -466,16 +467,16 @@ def test_the_ellipse_radii_and_points_satisfy_the_energy_equation(
     ke = kinetic_energy((m1, m2), (v1, v2))
     a, b = ellipse_radii(m1, m2, ke)
     assert energy_ellipse(m1, m2, v1, v2).radii == (a, b)
-    assert close(m1 * a * a / 2, ke, ke)
-    assert close(m2 * b * b / 2, ke, ke)
+    assert_close(m1 * a * a / 2, ke, scale=ke, abs=FLOOR)
+    assert_close(m2 * b * b / 2, ke, scale=ke, abs=FLOOR)
     if ke == 0:
         assert (a, b) == (0, 0)
         return
     x, y = ellipse_point(a, b, angle)
-    assert close(kinetic_energy((m1, m2), (x, y)), ke, 4 * ke)
+    assert_close(kinetic_energy((m1, m2), (x, y)), ke, scale=4 * ke, abs=FLOOR)
     xm, ym = ellipse_point(a, b, mpmath.mpf(angle))
-    assert close(float(xm), x, 4 * a)
-    assert close(float(ym), y, 4 * b)
+    assert_close(float(xm), x, scale=4 * a, abs=FLOOR)
+    assert_close(float(ym), y, scale=4 * b, abs=FLOOR)
 
 
 @given(exact_masses(), exact_masses(), exact_velocities(), exact_velocities())
@@ -544,8 +545,8 @@ def test_both_ka_whump_points_lie_on_the_momentum_line_and_the_reduced_ellipse(
     p = abs(m1 * v1) + abs(m2 * v2)
     for end in (whump.rebound, whump.pass_through):
         scale = p + abs(m1 * end.v1) + abs(m2 * end.v2)
-        assert close(end.momentum, m1 * v1 + m2 * v2, scale)
-        assert close(end.ke_after, energy, 4 * whump.ke_before)
+        assert_close(end.momentum, m1 * v1 + m2 * v2, scale=scale, abs=FLOOR)
+        assert_close(end.ke_after, energy, scale=4 * whump.ke_before, abs=FLOOR)
 
 
 # -- tensor forms ((3.9)-(3.14)) -------------------------------------------------------------

@@ -18,6 +18,7 @@ import pytest
 from hypothesis import example, given, target
 from hypothesis import strategies as st
 
+from checks.properties.closeness import assert_close
 from checks.properties.strategies import (
     analytic_polynomials,
     field_powers,
@@ -50,10 +51,6 @@ def xy_poly(terms: dict[tuple[int, int], tuple[int, int]]) -> cf.Poly:
 def z_poly(terms: dict[int, tuple[int, int]]) -> cf.Poly:
     """An analytic polynomial sum c_k z^k written in x, y."""
     return cf.zpoly_to_xy(cf.Poly({(k, 0): gaussian(c) for k, c in terms.items()}))
-
-
-def close(a: float, b: float, tol: float) -> bool:
-    return abs(a - b) <= tol
 
 
 def view_at(view: cf.PolyView, z: complex) -> float:
@@ -165,7 +162,7 @@ def test_level_lines_of_power_potentials_cross_at_right_angles(n: int) -> None:
     central differences; the origin itself is a pole or a zero of the field (no angle)."""
     for z in (complex(0.7, 0.4), complex(-1.3, 0.2), complex(0.1, -2.0), 1 + 0j, 600 - 800j):
         angle = cf.level_line_angle(n, z.real, z.imag)
-        assert close(angle.value, math.pi / 2, angle.error)
+        assert_close(angle.value, math.pi / 2, rel=0, abs=angle.error)
     with pytest.raises(ValueError, match="origin"):
         cf.level_line_angle(n, 0, 0)
 
@@ -179,8 +176,8 @@ def test_the_laminar_field_has_no_divergence_and_no_curl(a: tuple[int, int], z: 
     assert field.dfstar_dz_size == field.divergence_size == field.curl_size == 0
     fx, fy = cf.plot_field(lambda w: complex(*a) * w, z)
     tol = 1e-12 * (1 + abs(complex(*a))) * abs(z)
-    assert close(view_at(field.field_x, z), fx, tol)
-    assert close(view_at(field.field_y, z), fy, tol)
+    assert_close(view_at(field.field_x, z), fx, rel=0, abs=tol)
+    assert_close(view_at(field.field_y, z), fy, rel=0, abs=tol)
     unit = cf.conjugate_linear_field()
     assert (unit.field_x.coefficients, unit.field_y.coefficients) == ({"x1y0": 1}, {"x0y1": -1})
 
@@ -220,11 +217,11 @@ def test_the_power_potential_is_linear_in_the_strength_and_plots_its_field(
     strength = complex(*a)
     tol = 1e-12 * (1 + abs(strength)) * (1 + 2 * abs(z)) ** (n + 1)
     big_phi, big_a = cf.potential_parts(lambda w: strength * w ** (n + 1) / (n + 1), z)
-    assert close(big_phi, view_at(p.phi, z), tol)
-    assert close(big_a, view_at(p.a, z), tol)
+    assert_close(big_phi, view_at(p.phi, z), rel=0, abs=tol)
+    assert_close(big_a, view_at(p.a, z), rel=0, abs=tol)
     fx, fy = cf.plot_field(lambda w: strength * w**n, z)
-    assert close(fx, view_at(p.field_x, z), tol)
-    assert close(fy, view_at(p.field_y, z), tol)
+    assert_close(fx, view_at(p.field_x, z), rel=0, abs=tol)
+    assert_close(fy, view_at(p.field_y, z), rel=0, abs=tol)
 
 
 # --- power rule, multipoles ------------------------------------------------------------------
@@ -291,7 +288,7 @@ def test_a_two_to_the_k_pole_has_the_far_field_of_z_to_the_minus_k_minus_one(k: 
             abs(cf.multipole_field(mpmath.mpc(cmath.rect(r, 0.37)), sources)) for r in (1.0, 2.0)
         )
         slope = float(mpmath.log(f2 / f1) / mpmath.log(2))
-    assert close(slope, -(k + 1), 1e-3)
+    assert_close(slope, -(k + 1), rel=0, abs=1e-3)
 
 
 @pytest.mark.parametrize("n", range(-8, 9))
@@ -413,19 +410,19 @@ def test_a_line_source_has_flux_2_pi_re_a_and_circulation_minus_2_pi_im_a(a: tup
     (vorticity) of f = a/z (10.37)-(10.39), Figs. 10.9-10.10."""
     src = cf.line_source(*a)
     tol = src.flux.error + 1e-13 * (1 + abs(complex(float(a[0]), float(a[1]))))
-    assert close(src.flux.value, 2 * math.pi * float(a[0]), tol)
-    assert close(src.circulation.value, -2 * math.pi * float(a[1]), tol)
+    assert_close(src.flux.value, 2 * math.pi * float(a[0]), rel=0, abs=tol)
+    assert_close(src.circulation.value, -2 * math.pi * float(a[1]), rel=0, abs=tol)
     assert (src.star_numerator_re, src.star_numerator_im) == (a[0], -a[1])
     unit = cf.line_source()  # the unit real source a = q = 1 of Fig. 10.9(a)
-    assert close(unit.flux.value, 2 * math.pi, unit.flux.error + 1e-13)
-    assert close(unit.circulation.value, 0, unit.circulation.error + 1e-13)
+    assert_close(unit.flux.value, 2 * math.pi, rel=0, abs=unit.flux.error + 1e-13)
+    assert_close(unit.circulation.value, 0, rel=0, abs=unit.circulation.error + 1e-13)
 
 
 @pytest.mark.parametrize("index", range(-5, 6))
 def test_contour_integration_recovers_every_laurent_coefficient(index: int) -> None:
     """a_n = (1/(2 pi i)) loop z^(-n-1) f(z) dz for every n of a test Laurent series (10.44)."""
     check = cf.laurent_coefficient_check(index)
-    assert close(check.two_pi.value, 2 * math.pi, check.two_pi.error + 1e-14)
+    assert_close(check.two_pi.value, 2 * math.pi, rel=0, abs=check.two_pi.error + 1e-14)
     assert abs(check.residual.value) <= check.residual.error + 1e-14
     assert check.weight_power == -index - 1
     with pytest.raises(ValueError, match="index"):
@@ -437,15 +434,15 @@ def test_cauchys_derivative_formula_holds_for_every_order(order: int) -> None:
     """f^(n)(a) = (n!/(2 pi i)) loop f(z)/(z - a)^(n+1) dz (10.45), and the kernel power n + 1
     is the only one that works."""
     d = cf.cauchy_derivative(order)
-    assert close(d.two_pi.value, 2 * math.pi, d.two_pi.error + 1e-14)
+    assert_close(d.two_pi.value, 2 * math.pi, rel=0, abs=d.two_pi.error + 1e-14)
     # the integral is 2 pi/|b - a|^(n+1) while the integrand reaches r^-n/(|b - a| + r) on the
     # circle |z - a| = r: at DIGITS digits, that cancellation bounds the relative precision
     distance, r = abs(cf._CAUCHY_POLE - cf._CAUCHY_CENTER), cf._CAUCHY_RADIUS
     floor = 10.0**-cf.DIGITS * (distance / r) ** order * distance / (distance + r)
     for part, size in ((d.two_pi, 2 * math.pi), (d.numerator, math.factorial(order))):
         assert part.error >= floor * size
-    assert close(d.numerator.value, math.factorial(order), d.numerator.error + 1e-12)
-    assert close(d.taylor_numerator.value, 1.0, d.taylor_numerator.error + 1e-14)
+    assert_close(d.numerator.value, math.factorial(order), rel=0, abs=d.numerator.error + 1e-12)
+    assert_close(d.taylor_numerator.value, 1.0, rel=0, abs=d.taylor_numerator.error + 1e-14)
     assert cf.cauchy_kernel(order).power == order + 1
 
 
@@ -468,10 +465,10 @@ def test_the_stereographic_map_inverts_radii_through_half_angles(
             cf.stereographic_projection(pole_or_equator, diameter)
     assert p.radius == diameter / 2
     assert cf.stereographic_projection(theta, Fraction(diameter)).radius == Fraction(diameter) / 2
-    assert close(p.z_radius * p.w_radius, diameter**2, 1e-9 * diameter**2)
-    assert close(p.z_radius, diameter * math.tan(theta / 2), 1e-9 * max(1, p.z_radius))
+    assert_close(p.z_radius * p.w_radius, diameter**2, rel=0, abs=1e-9 * diameter**2)
+    assert_close(p.z_radius, diameter * math.tan(theta / 2), rel=0, abs=1e-9 * max(1, p.z_radius))
     image = cf.stereographic_image_radius(p.z_radius, diameter)
-    assert close(image, p.w_radius, 1e-9 * max(1, p.w_radius))
+    assert_close(image, p.w_radius, rel=0, abs=1e-9 * max(1, p.w_radius))
     for divisor in (
         p.tan_angle_divisor,
         p.cot_angle_divisor,
@@ -480,9 +477,9 @@ def test_the_stereographic_map_inverts_radii_through_half_angles(
         p.north_depth_angle_divisor,
         p.south_height_angle_divisor,
     ):
-        assert close(divisor, 2, 1e-6)
-    assert close(p.north_depth_exponent, 2, 1e-6)
-    assert close(p.south_height_exponent, 2, 1e-6)
+        assert_close(divisor, 2, rel=0, abs=1e-6)
+    assert_close(p.north_depth_exponent, 2, rel=0, abs=1e-6)
+    assert_close(p.south_height_exponent, 2, rel=0, abs=1e-6)
 
 
 # --- non-analytic fields (10.46)-(10.56) -----------------------------------------------------
@@ -537,13 +534,15 @@ def test_phasor_sums_obey_the_parallelogram_law(
     total = cf.phasor_pair_square(r1, phi1, r2, phi2, 1)
     diff = cf.phasor_pair_square(r1, phi1, r2, phi2, -1)
     scale = (r1 + r2) ** 2
-    assert close(total + diff, 2 * (r1 * r1 + r2 * r2), 1e-12 * scale)
+    assert_close(total + diff, 2 * (r1 * r1 + r2 * r2), rel=0, abs=1e-12 * scale)
     assert total >= -1e-12 * scale
     assert diff >= -1e-12 * scale
     z1, z2 = cmath.rect(r1, phi1), cmath.rect(r2, phi2)
-    assert close(total, abs(z1 + z2) ** 2, 1e-12 * scale)
-    assert close(total, cf.phasor_pair_square(r2, phi2, r1, phi1, 1), 1e-12 * scale)
-    assert close(diff, cf.phasor_pair_square(r1, phi1 + 0.7, r2, phi2 + 0.7, -1), 1e-12 * scale)
+    assert_close(total, abs(z1 + z2) ** 2, rel=0, abs=1e-12 * scale)
+    assert_close(total, cf.phasor_pair_square(r2, phi2, r1, phi1, 1), rel=0, abs=1e-12 * scale)
+    assert_close(
+        diff, cf.phasor_pair_square(r1, phi1 + 0.7, r2, phi2 + 0.7, -1), rel=0, abs=1e-12 * scale
+    )
     with pytest.raises(ValueError, match="sign"):
         cf.phasor_pair_square(r1, phi1, r2, phi2, 2)
 
@@ -655,8 +654,8 @@ def test_dipole_level_lines_pass_through_their_level(a: float, level: float, the
     for part, angle, value in (("phi", theta, level), ("a", -theta, level), ("a", theta, -level)):
         r = cf.dipole_level_radius(a, value, angle, part)
         at = cf.line_multipole_polar(a, 1, r, angle)
-        assert close(getattr(at, part), value, 1e-12 * abs(value))
-        assert close(cf.dipole_level_radius(a, 2 * value, angle, part), r / 2, 1e-12 * r)
+        assert_close(getattr(at, part), value, rel=0, abs=1e-12 * abs(value))
+        assert_close(cf.dipole_level_radius(a, 2 * value, angle, part), r / 2, rel=0, abs=1e-12 * r)
     with pytest.raises(ValueError, match="does not reach"):
         cf.dipole_level_radius(a, -level, theta, "phi")
 
@@ -715,7 +714,7 @@ def test_non_analytic_fields_at_a_point_are_their_polynomials(k: tuple, n: int, 
     at = cf.conjugate_power_field_at(*k, n, z.real, z.imag)
     size = (1 + abs(complex(*k))) * (1 + abs(z)) ** (n + 1)
     for value, view in ((at.rho, field.rho), (at.phi, field.phi), (at.a, field.a)):
-        assert close(value, view_at(view, z), 1e-9 * size)
+        assert_close(value, view_at(view, z), rel=0, abs=1e-9 * size)
     lx = view_at(field.longitudinal_x, z) + 1j * view_at(field.longitudinal_y, z)
     assert abs(at.longitudinal - lx) <= 1e-9 * size
     fstar = complex(*k).conjugate() * z**n
@@ -741,14 +740,16 @@ def test_stereographic_lengths_obey_thales_and_invert_radii(
     that radius."""
     s = cf.stereographic_lengths(theta, diameter)
     d2 = diameter * diameter
-    assert close(s.south_chord**2 + s.north_chord**2, d2, 1e-12 * d2)
-    assert close(s.north_depth * diameter, s.north_chord**2, 1e-12 * d2)
-    assert close(s.south_height * diameter, s.south_chord**2, 1e-12 * d2)
-    assert close(s.z_radius * s.w_radius, d2, 1e-9 * d2)
-    assert close(s.z_radius, diameter * math.tan(s.south_angle), 1e-9 * max(1, s.z_radius))
-    assert close(2 * s.south_angle, theta, 1e-12)
+    assert_close(s.south_chord**2 + s.north_chord**2, d2, rel=0, abs=1e-12 * d2)
+    assert_close(s.north_depth * diameter, s.north_chord**2, rel=0, abs=1e-12 * d2)
+    assert_close(s.south_height * diameter, s.south_chord**2, rel=0, abs=1e-12 * d2)
+    assert_close(s.z_radius * s.w_radius, d2, rel=0, abs=1e-9 * d2)
+    assert_close(
+        s.z_radius, diameter * math.tan(s.south_angle), rel=0, abs=1e-9 * max(1, s.z_radius)
+    )
+    assert_close(2 * s.south_angle, theta, rel=0, abs=1e-12)
     back = cf.stereographic_preimage_radius(cf.stereographic_image_radius(rho, diameter), diameter)
-    assert close(back, rho, 1e-9 * rho)
+    assert_close(back, rho, rel=0, abs=1e-9 * rho)
     with pytest.raises(ValueError, match="theta"):
         cf.stereographic_lengths(0.0, diameter)
 
@@ -757,8 +758,8 @@ def test_stereographic_lengths_obey_thales_and_invert_radii(
 def test_the_inverse_map_rebuilds_x_and_y_from_z_and_zstar(x: float, y: float) -> None:
     """x and y are recovered from z = x + iy and z* = x - iy through the inverse map (10.31)."""
     p = cf.coordinates_from_z(x, y)
-    assert close(p.x, x, 1e-12 * (1 + abs(x) + abs(y)))
-    assert close(p.y, y, 1e-12 * (1 + abs(x) + abs(y)))
+    assert_close(p.x, x, rel=0, abs=1e-12 * (1 + abs(x) + abs(y)))
+    assert_close(p.y, y, rel=0, abs=1e-12 * (1 + abs(x) + abs(y)))
 
 
 @given(gaussian_integers(), gaussian_integers(), gaussian_integers())

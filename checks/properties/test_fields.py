@@ -14,6 +14,7 @@ import pytest
 from hypothesis import assume, example, given, target
 from hypothesis import strategies as st
 
+from checks.properties.closeness import assert_close
 from checks.properties.strategies import (
     chord_offsets,
     clock_hours,
@@ -36,10 +37,6 @@ from mechmodel import fields
 pytestmark = pytest.mark.properties
 REL = 1e-12
 TRIG = 1e-9  # cos and sin of phases up to ~1e3 radians lose a few digits of the phase
-
-
-def close(a: float, b: float, scale: float, rel: float = REL) -> bool:
-    return abs(a - b) <= rel * scale
 
 
 # --- tunnels: every chord is the same 84-minute oscillator (Fig. 9.8) ------------------------
@@ -65,7 +62,7 @@ def test_chord_acceleration_is_harmonic(g: float, radius: float, offset: float, 
     half = math.sqrt(radius * radius - d * d)
     s = half * math.sin(u)  # a point of the chord, either side of its middle
     acc = fields.chord_acceleration(g, radius, d, s)
-    assert close(acc, -g * s / radius, g * half / radius)
+    assert_close(acc, -g * s / radius, scale=g * half / radius)
 
 
 @given(surface_gravities(), planet_radii(), chord_offsets(), oscillator_times())
@@ -79,7 +76,7 @@ def test_chord_motion_conserves_energy(g: float, radius: float, offset: float, t
     start = fields.gravity_potential(g, radius, radius)  # at rest at the chord's end
     scale = 3 * g * radius
     target(abs(energy - start) / scale, label="relative energy error")
-    assert close(energy, start, scale, TRIG)
+    assert_close(energy, start, rel=TRIG, scale=scale)
 
 
 @given(surface_gravities(), planet_radii(), oscillator_times())
@@ -90,8 +87,8 @@ def test_tunnel_keeps_pace_with_the_grazing_orbit(g: float, radius: float, t: fl
     omega = fields.circular_orbit_speed(g, radius) / radius
     time = t * fields.tunnel_period(g, radius) / 10
     s, v = fields.chord_tunnel_position(g, radius, 0.0, time)
-    assert close(s, radius * math.cos(omega * time), radius, TRIG)
-    assert close(v, -radius * omega * math.sin(omega * time), radius * omega, TRIG)
+    assert_close(s, radius * math.cos(omega * time), rel=TRIG, scale=radius)
+    assert_close(v, -radius * omega * math.sin(omega * time), rel=TRIG, scale=radius * omega)
 
 
 @given(
@@ -119,7 +116,7 @@ def test_no_tunnel_reaches_outside_the_planet(
 def test_orbit_covers_half_a_turn_while_the_tunnel_is_crossed(g: float, radius: float) -> None:
     """The tunnel transit time is half the period of the grazing orbit (Fig. 9.8: they meet
     1/2-way around)."""
-    assert close(fields.orbit_meeting_fraction(g, radius), 0.5, 1.0, 4 * REL)
+    assert_close(fields.orbit_meeting_fraction(g, radius), 0.5, rel=4 * REL, scale=1.0)
 
 
 # --- the uniform Earth's field and potential, inside and out (9.4), Fig. 9.7 -----------------
@@ -134,10 +131,10 @@ def test_field_and_potential_are_continuous_at_the_surface(g: float, radius: flo
     outside_f = fields.gravity_field(g, radius, just_out)
     inside_u = fields.gravity_potential(g, radius, radius)
     outside_u = fields.gravity_potential(g, radius, just_out)
-    assert close(inside_f, -g, g)
-    assert close(outside_f, -g, g, 4 * REL)
-    assert close(inside_u, -g * radius, g * radius)
-    assert close(outside_u, -g * radius, g * radius)
+    assert_close(inside_f, -g, scale=g)
+    assert_close(outside_f, -g, rel=4 * REL, scale=g)
+    assert_close(inside_u, -g * radius, scale=g * radius)
+    assert_close(outside_u, -g * radius, scale=g * radius)
 
 
 @given(surface_gravities(), planet_radii())
@@ -145,7 +142,7 @@ def test_the_centre_feels_no_pull_and_is_the_bottom_of_the_well(g: float, radius
     """At the centre the linear field -g r / R (9.4a) vanishes and the parabolic potential has
     its bottom, -3 g R / 2 (Fig. 9.7: (x^2 - 3)/2 at x = 0); r is a distance, never negative."""
     assert fields.gravity_field(g, radius, 0.0) == 0
-    assert close(fields.gravity_potential(g, radius, 0.0), -1.5 * g * radius, g * radius)
+    assert_close(fields.gravity_potential(g, radius, 0.0), -1.5 * g * radius, scale=g * radius)
     for law in (fields.gravity_field, fields.gravity_potential):
         with pytest.raises(ValueError, match="distance"):
             law(g, radius, -radius / 2)
@@ -160,7 +157,7 @@ def test_field_is_minus_the_slope_of_the_potential(g: float, radius: float, x: f
     slope = (
         fields.gravity_potential(g, radius, r + h) - fields.gravity_potential(g, radius, r - h)
     ) / (2 * h)
-    assert close(-slope, fields.gravity_field(g, radius, r), g, 1e-6)
+    assert_close(-slope, fields.gravity_field(g, radius, r), rel=1e-6, scale=g)
 
 
 @given(surface_gravities(), planet_radii(), radial_fractions())
@@ -173,7 +170,7 @@ def test_the_field_inside_is_linear_and_outside_inverse_square(
     r = x * radius
     enclosed = min(x, 1.0) ** 3  # fraction of the planet's mass within r
     expected = -g * enclosed / (x * x)
-    assert close(fields.gravity_field(g, radius, r), expected, g * (1 + enclosed / x**2))
+    assert_close(fields.gravity_field(g, radius, r), expected, scale=g * (1 + enclosed / x**2))
 
 
 @given(fraction_coefficients())
@@ -200,11 +197,13 @@ def test_escape_takes_three_equal_steps(surface: Fraction) -> None:
 def test_escape_speed_is_root_two_times_orbit_speed(g: float, radius: float) -> None:
     """Ve = v0 sqrt(2) = sqrt(2gR) (9.11a): the kinetic energy of escape is twice the orbit's."""
     speeds = fields.surface_speeds(g, radius)
-    assert close(speeds.escape, speeds.orbit * math.sqrt(2), speeds.escape, 4 * REL)
-    assert close(speeds.escape_over_orbit, math.sqrt(2), 1.0, 4 * REL)
-    assert close(speeds.orbit_over_escape, math.sqrt(0.5), 1.0, 4 * REL)
-    assert close(speeds.escape_factor, 2.0, 1.0, 4 * REL)  # Ve^2 = 2 g R
-    assert close(speeds.escape, fields.escape_speed_from_orbit_speed(speeds.orbit), speeds.escape)
+    assert_close(speeds.escape, speeds.orbit * math.sqrt(2), rel=4 * REL, scale=speeds.escape)
+    assert_close(speeds.escape_over_orbit, math.sqrt(2), rel=4 * REL, scale=1.0)
+    assert_close(speeds.orbit_over_escape, math.sqrt(0.5), rel=4 * REL, scale=1.0)
+    assert_close(speeds.escape_factor, 2.0, rel=4 * REL, scale=1.0)  # Ve^2 = 2 g R
+    assert_close(
+        speeds.escape, fields.escape_speed_from_orbit_speed(speeds.orbit), scale=speeds.escape
+    )
 
 
 @given(lengths())
@@ -237,14 +236,14 @@ def test_light_cannot_escape_from_the_black_hole_radius(g: float, mass: float, c
     """At R = 2GM/c^2 (9.12b) the escape speed sqrt(2GM/R) (9.11b) is c (9.12a)."""
     big_g = 6.5e-11 * g  # any positive G
     radius = fields.schwarzschild_radius(big_g, mass, c)
-    assert close(math.sqrt(2 * big_g * mass / radius), c, c, 4 * REL)
+    assert_close(math.sqrt(2 * big_g * mass / radius), c, rel=4 * REL, scale=c)
 
 
 @given(oscillator_frequencies(), oscillator_frequencies(), oscillator_frequencies())
 def test_shell_elements_cancel(solid_angle: float, near: float, far: float) -> None:
     """The shell elements cut by a cone of sight pull equally and oppositely: m/d^2 = M/D^2
     since both masses grow as distance squared (Fig. 9.6)."""
-    assert close(fields.shell_pair_pull(solid_angle, near, far), 0.0, 2 * solid_angle)
+    assert_close(fields.shell_pair_pull(solid_angle, near, far), 0.0, scale=2 * solid_angle)
 
 
 # --- the starlet's orbits: the isotropic 2-D oscillator (9.8)-(9.15) -------------------------
@@ -268,8 +267,8 @@ def test_each_dimension_keeps_its_energy(
     error = abs(later.energy_x - start.energy_x) + abs(later.energy_y - start.energy_y)
     target(error / scale, label="relative energy error")
     assert error <= TRIG * scale
-    assert close(later.energy_x, omega * omega * ax * ax / 2, scale, TRIG)
-    assert close(later.energy_y, omega * omega * ay * ay / 2, scale, TRIG)
+    assert_close(later.energy_x, omega * omega * ax * ax / 2, rel=TRIG, scale=scale)
+    assert_close(later.energy_y, omega * omega * ay * ay / 2, rel=TRIG, scale=scale)
 
 
 @given(
@@ -291,7 +290,7 @@ def test_starlet_orbit_keeps_its_angular_momentum(
     error = abs(later.angular_momentum - start.angular_momentum)
     target(error / scale, label="relative angular momentum error")
     assert error <= TRIG * scale
-    assert close(start.angular_momentum, omega * ax * ay * math.sin(px - py), scale, TRIG)
+    assert_close(start.angular_momentum, omega * ax * ay * math.sin(px - py), rel=TRIG, scale=scale)
 
 
 @given(
@@ -304,9 +303,9 @@ def test_quadrature_orbit_is_the_ellipse_of_its_amplitudes(
     ((9.13)); in phase they trace the line y = (b/a) x ((9.14))."""
     assume(abs(a) > 1e-3 and abs(b) > 1e-3)
     quad = fields.oscillator_orbit(omega, a, b, 0.0, -math.pi / 2, t)
-    assert close((quad.x / a) ** 2 + (quad.y / b) ** 2, 1.0, 1.0, TRIG)
+    assert_close((quad.x / a) ** 2 + (quad.y / b) ** 2, 1.0, rel=TRIG, scale=1.0)
     line = fields.oscillator_orbit(omega, a, b, 0.0, 0.0, t)
-    assert close(line.y, b / a * line.x, abs(b), TRIG)
+    assert_close(line.y, b / a * line.x, rel=TRIG, scale=abs(b))
 
 
 @given(lengths(), st.floats(min_value=-1.0, max_value=1.0))
@@ -317,7 +316,7 @@ def test_initial_phase_puts_the_oscillator_at_its_start(amplitude: float, u: flo
     start beyond the swing is a ValueError."""
     x0 = u * amplitude
     alpha = fields.oscillator_initial_phase(x0, amplitude)
-    assert close(amplitude * math.sin(alpha), x0, amplitude, 4 * REL)
+    assert_close(amplitude * math.sin(alpha), x0, rel=4 * REL, scale=amplitude)
     assert abs(alpha) <= math.pi / 2
     if u == 1:
         assert alpha == math.pi / 2
@@ -334,7 +333,7 @@ def test_parabola_points_are_as_far_from_focus_as_from_directrix(a: Fraction, x:
     geo = fields.parabola_geometry(float(a))
     to_focus = geo.focal_radius(x)
     to_directrix = geo.directrix_distance(x)
-    assert close(to_focus, to_directrix, to_focus + to_directrix, 4 * REL)
+    assert_close(to_focus, to_directrix, rel=4 * REL, scale=to_focus + to_directrix)
 
 
 @given(fraction_coefficients())
@@ -357,10 +356,12 @@ def test_force_triangle_altitude_is_constant(a: Fraction, x: float) -> None:
     normal to the tangent (Fig. 9.1a); its base, the scaled force, is -x."""
     assume(abs(x) > 1e-6)
     tri = fields.force_triangle(float(a), x)
-    assert close(tri.altitude, 1 / (2 * float(a)), tri.altitude, 4 * REL)
-    assert close(tri.base, -x, abs(x), 4 * REL)
+    assert_close(tri.altitude, 1 / (2 * float(a)), rel=4 * REL, scale=tri.altitude)
+    assert_close(tri.base, -x, rel=4 * REL, scale=abs(x))
     slope = 2 * float(a) * x  # the tangent's direction (1, slope) is normal to the hypotenuse
-    assert close(tri.base + tri.altitude * slope, 0.0, abs(tri.base) + abs(tri.altitude * slope))
+    assert_close(
+        tri.base + tri.altitude * slope, 0.0, scale=abs(tri.base) + abs(tri.altitude * slope)
+    )
 
 
 @given(fraction_coefficients(), rationals(-10, 10, 12))
@@ -401,7 +402,7 @@ def test_power_law_force_is_minus_the_slope(a: Fraction, n: int, x: Fraction) ->
     assert x * force == -n * a * x**n
     step = 1e-30
     expected = -(float(a) * (float(x) + step * 1j) ** n).imag / step
-    assert close(float(force), expected, abs(expected) + float(a))
+    assert_close(float(force), expected, scale=abs(expected) + float(a))
     if x == 0:
         assert force == (-a if n == 1 else 0)
         with pytest.raises(ValueError, match="infinite"):
@@ -428,7 +429,7 @@ def test_normal_lines_are_perpendicular(slope: float) -> None:
         return
     assume(abs(slope) > 1e-6)
     normal = fields.normal_slope(slope)
-    assert close(fields.angle_between_lines(slope, normal), math.pi / 2, 1.0, 4 * REL)
+    assert_close(fields.angle_between_lines(slope, normal), math.pi / 2, rel=4 * REL, scale=1.0)
 
 
 @given(slopes(), slopes())
@@ -438,7 +439,7 @@ def test_angle_between_lines_is_the_acute_angle_of_their_directions(s1: float, s
     (the cross and dot products of their directions (1, s1) and (1, s2)): 0 to 90 degrees, the
     90-degree marks of Fig. 9.2 for y = s x and y = -x/s."""
     expected = math.atan2(abs(s2 - s1), abs(1 + s1 * s2))
-    assert close(fields.angle_between_lines(s1, s2), expected, 1.0, 4 * REL)
+    assert_close(fields.angle_between_lines(s1, s2), expected, rel=4 * REL, scale=1.0)
 
 
 @given(slopes())
@@ -450,7 +451,7 @@ def test_tangent_bisects_focal_radius_and_drop_line(slope: float) -> None:
     to_focus = math.atan2(geo.focal_height - geo.height(x), -x)  # direction to the focus
     drop = -math.pi / 2
     angle = abs(math.remainder(to_focus - drop, 2 * math.pi))
-    assert close(angle, fields.focal_drop_angle(abs(slope)), math.pi, 1e-9)
+    assert_close(angle, fields.focal_drop_angle(abs(slope)), rel=1e-9, scale=math.pi)
 
 
 # --- calculus, clocks and counts ------------------------------------------------------------
@@ -493,8 +494,10 @@ def test_chord_is_never_longer_than_the_diameter(radius: float, u: float) -> Non
     diameter, which the half-turn reaches (exercise 1.9.4: R sqrt(2) for 90 degrees)."""
     angle = u * math.pi / 10
     assert fields.chord_length(radius, angle) <= 2 * radius * (1 + REL)
-    assert close(fields.chord_length(radius, math.pi), 2 * radius, radius)
-    assert close(fields.chord_length(radius, math.pi / 2), radius * math.sqrt(2), radius, 4 * REL)
+    assert_close(fields.chord_length(radius, math.pi), 2 * radius, scale=radius)
+    assert_close(
+        fields.chord_length(radius, math.pi / 2), radius * math.sqrt(2), rel=4 * REL, scale=radius
+    )
 
 
 @given(
@@ -723,8 +726,8 @@ def test_total_energy_is_the_sum_of_the_dimensions(
     state = fields.oscillator_orbit(omega, amp_x, amp_y, 0.0, lag, t)
     total = fields.oscillator_total_energy(1, omega * omega, state.x, state.y, state.vx, state.vy)
     expected = omega * omega * (amp_x * amp_x + amp_y * amp_y) / 2  # at the turning points
-    assert close(total, state.energy_x + state.energy_y, expected)
-    assert close(total, expected, expected, TRIG)
+    assert_close(total, state.energy_x + state.energy_y, scale=expected)
+    assert_close(total, expected, rel=TRIG, scale=expected)
 
 
 @given(fraction_quantities(), fraction_quantities(), fraction_quantities(), fraction_quantities())

@@ -14,6 +14,7 @@ import pytest
 from hypothesis import example, given
 from hypothesis import strategies as st
 
+from checks.properties.closeness import assert_close, magnitude
 from checks.properties.strategies import (
     acute_angles,
     angles,
@@ -66,11 +67,6 @@ pytestmark = pytest.mark.properties
 REL = 1e-12
 
 
-def close(x: float, y: float, *magnitudes: float) -> bool:
-    """|x - y| within REL of the magnitudes involved (x and y themselves, and any others)."""
-    return abs(x - y) <= REL * (abs(x) + abs(y) + sum(abs(m) for m in magnitudes))
-
-
 # -- the six segments of Fig. 1.4 -------------------------------------------------------------
 @given(angles(), lengths())
 @example(1.0, 1.0)  # Fig. 1.4b
@@ -78,7 +74,7 @@ def test_base_and_altitude_lie_on_the_circle(sigma: float, r: float) -> None:
     """(r cos σ)^2 + (r sin σ)^2 = r^2: the base and altitude are the legs of the right
     triangle with hypotenuse r (Fig. 1.4a; Pythagoras, line 1387)."""
     s = unit_circle_segments(sigma, r)
-    assert close(s.base**2 + s.altitude**2, r**2)
+    assert_close(s.base**2 + s.altitude**2, r**2)
 
 
 @given(oblique_angles(), lengths())
@@ -86,21 +82,21 @@ def test_secant_is_hypotenuse_of_radius_and_tangent(sigma: float, r: float) -> N
     """sec^2 σ = 1 + tan^2 σ: the secant runs from the centre to the end of the tangent, which
     is normal to the radius (Fig. 1.4b)."""
     s = unit_circle_segments(sigma, r)
-    assert close(s.secant**2, r**2 + s.tangent**2)
+    assert_close(s.secant**2, r**2 + s.tangent**2)
 
 
 @given(oblique_angles(), lengths())
 def test_cosecant_is_hypotenuse_of_radius_and_cotangent(sigma: float, r: float) -> None:
     """csc^2 σ = 1 + cot^2 σ: the same law on the y-axis side (Fig. 1.4b)."""
     s = unit_circle_segments(sigma, r)
-    assert close(s.cosecant**2, r**2 + s.cotangent**2)
+    assert_close(s.cosecant**2, r**2 + s.cotangent**2)
 
 
 @given(oblique_angles())
 def test_tangent_and_cotangent_are_inverse(sigma: float) -> None:
     """tan σ cot σ = 1: a slope in Fig. 1.2a is the inverse slope in Fig. 1.2b (line 1168)."""
     s = unit_circle_segments(sigma)
-    assert close(s.tangent * s.cotangent, 1.0)
+    assert_close(s.tangent * s.cotangent, 1.0)
 
 
 @given(lengths())
@@ -122,7 +118,7 @@ def test_sine_is_cosine_of_the_complement(sigma: float) -> None:
     (line 1175)."""
     s = unit_circle_segments(sigma)
     c = unit_circle_segments(complement(sigma))
-    assert close(s.altitude, c.base, sigma, math.pi)
+    assert_close(s.altitude, c.base, scale=magnitude(s.altitude, c.base, sigma, math.pi))
 
 
 @given(oblique_angles())
@@ -130,7 +126,7 @@ def test_tangent_is_cotangent_of_the_complement(sigma: float) -> None:
     """tan σ = cot σc = 1 / tan σc (line 1175)."""
     s = unit_circle_segments(sigma)
     c = unit_circle_segments(complement(sigma))
-    assert close(s.tangent, c.cotangent)
+    assert_close(s.tangent, c.cotangent)
 
 
 @given(oblique_angles(), lengths())
@@ -141,18 +137,19 @@ def test_the_complement_swaps_each_ratio_with_its_co_ratio(sigma: float, r: floa
     (line 1175)."""
     s = unit_circle_segments(sigma, r)
     c = complement_segments(sigma, r)
-    assert close(c.base, s.altitude, r * sigma, r * math.pi)
-    assert close(c.altitude, s.base, r * sigma, r * math.pi)
-    assert close(c.tangent, s.cotangent)
-    assert close(c.cotangent, s.tangent)
-    assert close(c.secant, s.cosecant)
-    assert close(c.tangent * s.tangent, r * r)
+    assert_close(c.base, s.altitude, scale=magnitude(c.base, s.altitude, r * sigma, r * math.pi))
+    assert_close(c.altitude, s.base, scale=magnitude(c.altitude, s.base, r * sigma, r * math.pi))
+    assert_close(c.tangent, s.cotangent)
+    assert_close(c.cotangent, s.tangent)
+    assert_close(c.secant, s.cosecant)
+    assert_close(c.tangent * s.tangent, r * r)
 
 
 @given(angles())
 def test_complement_of_the_complement_is_the_angle(sigma: float) -> None:
     """(σc)c = σ: complementing twice swaps the plots of Fig. 1.2 back (line 1174)."""
-    assert close(complement(complement(sigma)), sigma, math.pi)
+    twice = complement(complement(sigma))
+    assert_close(twice, sigma, scale=magnitude(twice, sigma, math.pi))
 
 
 @given(acute_angles())
@@ -160,13 +157,13 @@ def test_tangent_line_is_normal_to_the_radius(sigma: float) -> None:
     """The tangent segment's slope angle is σ - π/2 = -σc: normal to the radius at slope angle
     σ, so the two slopes multiply to -1 (Figs. 1.4b and 1.5)."""
     s = unit_circle_segments(sigma)
-    assert close(math.tan(s.tangent_slope_angle) * math.tan(sigma), -1.0)
+    assert_close(math.tan(s.tangent_slope_angle) * math.tan(sigma), -1.0)
 
 
 @given(slopes())
 def test_slope_angle_has_the_slope_for_tangent(m: float) -> None:
     """tan(arctan m) = m: the slope angle of a slope-m line (line 934: 45° for slope 1/1)."""
-    assert close(math.tan(slope_angle(m)), m)
+    assert_close(math.tan(slope_angle(m)), m)
 
 
 # -- arc functions and their two solutions (Fig. 1.7) ------------------------------------------
@@ -178,9 +175,11 @@ def test_both_arcsine_solutions_give_the_value(a: float) -> None:
     """sin σ1 = sin σ2 = a for σ1 = sin⁻¹(a) and its x-reflection σ2 = π - σ1 (Fig. 1.7a): the
     reflection keeps the altitude and reverses the base."""
     sol = arc_solutions("sin", a)
-    assert close(math.sin(sol.first), a, math.pi)
-    assert close(math.sin(sol.second), a, math.pi)
-    assert close(math.cos(sol.second), -math.cos(sol.first), math.pi)
+    sin1, sin2 = math.sin(sol.first), math.sin(sol.second)
+    cos1, cos2 = math.cos(sol.first), math.cos(sol.second)
+    assert_close(sin1, a, scale=magnitude(sin1, a, math.pi))
+    assert_close(sin2, a, scale=magnitude(sin2, a, math.pi))
+    assert_close(cos2, -cos1, scale=magnitude(cos2, cos1, math.pi))
 
 
 @given(unit_interval_values())
@@ -191,9 +190,11 @@ def test_both_arccosine_solutions_give_the_value(b: float) -> None:
     """cos σ1 = cos σ2 = b for σ1 = cos⁻¹(b) and its y-reflection σ2 = -σ1 (Fig. 1.7b): the
     reflection keeps the base and reverses the altitude."""
     sol = arc_solutions("cos", b)
-    assert close(math.cos(sol.first), b, math.pi)
-    assert close(math.cos(sol.second), b, math.pi)
-    assert close(math.sin(sol.second), -math.sin(sol.first), math.pi)
+    sin1, sin2 = math.sin(sol.first), math.sin(sol.second)
+    cos1, cos2 = math.cos(sol.first), math.cos(sol.second)
+    assert_close(cos1, b, scale=magnitude(cos1, b, math.pi))
+    assert_close(cos2, b, scale=magnitude(cos2, b, math.pi))
+    assert_close(sin2, -sin1, scale=magnitude(sin2, sin1, math.pi))
 
 
 @given(
@@ -218,8 +219,9 @@ def test_both_arctangent_solutions_give_the_value(t: float) -> None:
     check is sin σ = t cos σ, which stays finite."""
     sol = arc_solutions("tan", t)
     for sigma in (sol.first, sol.second):
-        assert close(math.sin(sigma), t * math.cos(sigma), 1.0 + abs(t))
-    assert close(sol.separation, -math.pi)  # the antipode, half a turn back
+        sine, t_cosine = math.sin(sigma), t * math.cos(sigma)
+        assert_close(sine, t_cosine, scale=magnitude(sine, t_cosine, 1.0 + abs(t)))
+    assert_close(sol.separation, -math.pi)  # the antipode, half a turn back
 
 
 @given(slopes(), lengths())
@@ -228,10 +230,10 @@ def test_atan2_solutions_are_antipodal(a: float, b: float) -> None:
     """atan2(a, b) and atan2(-a, -b) point to (b, a) and (-b, -a): both have slope a/b and
     they differ by half a turn, ±180° (line 1603, line 1832)."""
     sol = arctan_solutions(a, b)
-    assert close(abs(sol.separation), math.pi)
+    assert_close(abs(sol.separation), math.pi)
     r = math.hypot(a, b)
-    assert close(r * math.cos(sol.first), b, r)
-    assert close(r * math.sin(sol.first), a, r)
+    assert_close(r * math.cos(sol.first), b, scale=magnitude(r * math.cos(sol.first), b, r))
+    assert_close(r * math.sin(sol.first), a, scale=magnitude(r * math.sin(sol.first), a, r))
     on_axes = [(s.first, s.second) for s in (arctan_solutions(1, 0), arctan_solutions(0, 1))]
     assert on_axes == [(math.pi / 2, -math.pi / 2), (0, math.pi)]
     with pytest.raises(ValueError, match="no direction"):
@@ -261,8 +263,8 @@ def test_the_principal_ranges_are_spanned_by_the_calculator_answers(a: float, t:
 def test_half_turn_sweeps_the_whole_pie(r: float) -> None:
     """The book's total sector area r^2 σ is π r^2 for σ = π (line 1142) and half of it for a
     quarter turn (Fig. 1.3b)."""
-    assert close(total_sector_area(turn_angle(Fraction(1, 2)), r), math.pi * r * r)
-    assert close(total_sector_area(turn_angle(Fraction(1, 4)), r), math.pi * r * r / 2)
+    assert_close(total_sector_area(turn_angle(Fraction(1, 2)), r), math.pi * r * r)
+    assert_close(total_sector_area(turn_angle(Fraction(1, 4)), r), math.pi * r * r / 2)
 
 
 @given(st.floats(min_value=1e-3, max_value=2 * math.pi - 1e-3), lengths())
@@ -272,22 +274,23 @@ def test_arc_is_longer_than_its_chord(sigma: float, r: float) -> None:
     assert arc_length(sigma, r) > chord(sigma, r)
     excess = arc_chord_excess(sigma)
     assert excess > 0
-    assert close(excess + 1, arc_length(sigma, r) / chord(sigma, r))  # the same on every circle
-    assert close(total_sector_area(sigma, r), arc_length(sigma, r) * r)
-    assert close(arc_length(turn_angle(1), r), 2 * math.pi * r)  # the circumference
+    assert_close(excess + 1, arc_length(sigma, r) / chord(sigma, r))  # the same on every circle
+    assert_close(total_sector_area(sigma, r), arc_length(sigma, r) * r)
+    assert_close(arc_length(turn_angle(1), r), 2 * math.pi * r)  # the circumference
 
 
 def test_the_sixty_degree_arc_is_four_point_seven_percent_longer() -> None:
     """The π/3 arc over the chord RX, of length r, is π/3 - 1 = 4.72 % longer (Fig. 1.6b,
     lines 1436-1440)."""
-    assert close(arc_chord_excess(math.pi / 3), math.pi / 3 - 1, 1.0)
+    excess = arc_chord_excess(math.pi / 3)
+    assert_close(excess, math.pi / 3 - 1, scale=magnitude(excess, math.pi / 3 - 1, 1.0))
 
 
 @given(lengths())
 def test_chord_of_sixty_degrees_is_the_radius(r: float) -> None:
     """The chord under a π/3 arc equals the radius: the equilateral triangle of Euclid's
     construction (lines 1433-1435, Fig. 1.6b)."""
-    assert close(chord(math.pi / 3, r), r)
+    assert_close(chord(math.pi / 3, r), r)
 
 
 @given(st.integers(min_value=0, max_value=48), st.integers(min_value=1, max_value=48))
@@ -298,10 +301,10 @@ def test_clock_angle_is_the_fraction_of_a_turn(hours: int, per_turn: int) -> Non
     doubles the points (the 24-hour clock from the 12-point one), and 2h of the new hours
     sweep the same angle."""
     angle = clock_angle(hours, per_turn)
-    assert close(angle, turn_angle(Fraction(hours, per_turn)))
+    assert_close(angle, turn_angle(Fraction(hours, per_turn)))
     doubled = doubled_clock_points(per_turn)
     assert doubled == 2 * per_turn
-    assert close(clock_angle(2 * hours, doubled), angle)
+    assert_close(clock_angle(2 * hours, doubled), angle)
 
 
 @given(st.integers(min_value=3, max_value=1000))
@@ -311,7 +314,8 @@ def test_the_outer_angles_of_a_regular_polygon_make_one_turn(n: int) -> None:
     by one whole turn in all: the interior angle is (n - 2) π / n, π/3 for the triangle of the
     60 degree slope (line 1431, Fig. 1.6)."""
     interior = regular_polygon_interior_angle(n)
-    assert close(n * (math.pi - interior), turn_angle(1), n * math.pi)
+    exterior = n * (math.pi - interior)
+    assert_close(exterior, turn_angle(1), scale=magnitude(exterior, turn_angle(1), n * math.pi))
 
 
 @given(st.integers(min_value=0, max_value=4))
@@ -320,7 +324,7 @@ def test_each_quadrant_is_a_quarter_turn(q: int) -> None:
     """The four quadrants are quarter turns (Fig. 1.3b): q of them hold q/4 of all directions
     (line 1818: never answering in the 3rd quadrant is wrong 25 % of the time), all four the
     whole turn, and there is no fifth."""
-    assert close(turn_angle(quadrant_fraction(q)), q * complement(0))
+    assert_close(turn_angle(quadrant_fraction(q)), q * complement(0))
     assert quadrant_fraction(4) == 1
     with pytest.raises(ValueError, match="four quadrants"):
         quadrant_fraction(5)
@@ -376,12 +380,13 @@ def test_whirling_sequence_is_geometric(sigma: float, terms: int) -> None:
     shrunk by cot σ: a geometric (power) sequence (lines 1390-1391)."""
     w = whirling_rectangles(sigma, terms)
     for before, after in zip(w.lengths, w.lengths[1:], strict=False):
-        assert close(after, before * w.scale_factor)
+        assert_close(after, before * w.scale_factor)
     assert len(w.lengths) == terms
-    assert close(w.lengths[0], math.tan(sigma))
+    assert_close(w.lengths[0], math.tan(sigma))
     assert w.lengths[1] == 1
-    assert close(w.rotation, math.pi / 2)  # each is the one before turned a quarter turn
-    assert close(w.first_angle, sigma - math.pi / 2, math.pi)  # along the tangent line
+    assert_close(w.rotation, math.pi / 2)  # each is the one before turned a quarter turn
+    tangent_line = sigma - math.pi / 2  # the first segment lies along the tangent line
+    assert_close(w.first_angle, tangent_line, scale=magnitude(w.first_angle, tangent_line, math.pi))
     assert len(whirling_rectangles(sigma).lengths) == 5  # Fig. 1.5
 
 
@@ -391,9 +396,9 @@ def test_golden_whirling_rectangles_are_whirling_squares(terms: int) -> None:
     rectangle is a square plus the next rectangle: L_k = L_(k+1) + L_(k+2) (Fig. 1.10c)."""
     g = golden_ratio()
     w = whirling_rectangles(math.atan(g.plus), terms)
-    assert close(w.scale_factor, -g.minus)
+    assert_close(w.scale_factor, -g.minus)
     for k in range(terms - 2):
-        assert close(w.lengths[k], w.lengths[k + 1] + w.lengths[k + 2])
+        assert_close(w.lengths[k], w.lengths[k + 1] + w.lengths[k + 2])
 
 
 @given(lengths())
@@ -401,9 +406,9 @@ def test_golden_means_are_the_roots_of_g_squared_is_g_plus_one(u: float) -> None
     """G± = u (1 ± √5)/2 solve G^2 = u G + u^2: their sum is u and product -u^2, so G- is
     -1/G+ for the unit square (Figs. 1.9b and 1.10)."""
     g = golden_ratio(u)
-    assert close(g.plus + g.minus, u, g.plus, g.minus)
-    assert close(g.plus * g.minus, -u * u)
-    assert close(g.plus**2, u * g.plus + u * u)
+    assert_close(g.plus + g.minus, u, scale=magnitude(g.plus + g.minus, u, g.plus, g.minus))
+    assert_close(g.plus * g.minus, -u * u)
+    assert_close(g.plus**2, u * g.plus + u * u)
 
 
 def test_golden_means_in_mpmath_precision() -> None:
@@ -422,7 +427,7 @@ def test_means_are_ordered(a: float, b: float) -> None:
     m = thales_means(a, b)
     assert m.arithmetic >= m.geometric * (1 - REL)
     assert m.geometric >= m.harmonic * (1 - REL)
-    assert close(m.geometric**2, a * b)
+    assert_close(m.geometric**2, a * b)
 
 
 @given(fraction_lengths(), fraction_lengths())
@@ -438,7 +443,7 @@ def test_thales_right_triangle_exactly(a: Fraction, b: Fraction) -> None:
 def test_angle_in_a_semicircle_is_right(a: float, b: float) -> None:
     """Thales' theorem: the apex over the diameter a + b sees it at π/2, whatever a and b
     (Fig. 1.9a, the 90° label)."""
-    assert close(thales_angle(a, b), math.pi / 2)
+    assert_close(thales_angle(a, b), math.pi / 2)
 
 
 @given(secants())
@@ -448,8 +453,8 @@ def test_arcsecant_construction(s: float) -> None:
     """The tangent from x = s to the unit circle is √(ab) with a = s - 1, b = s + 1, so its
     square is s^2 - 1, and the angle it makes has secant s (Fig. 1.8)."""
     c = arcsec_construction(s)
-    assert close(c.tangent**2, s * s - 1, 1.0)
-    assert close(1 / math.cos(c.angle), s)
+    assert_close(c.tangent**2, s * s - 1, scale=magnitude(c.tangent**2, s * s - 1, 1.0))
+    assert_close(1 / math.cos(c.angle), s)
 
 
 # -- right triangles and degrees of freedom ------------------------------------------------------
@@ -469,8 +474,8 @@ def test_the_right_triangle_of_a_slope_angle(sigma: float, b: float) -> None:
     tan σ, and hypotenuse b sec σ, with a^2 + b^2 = r^2 (Fig. 1.4b; Pythagoras, line 1387)."""
     t = right_triangle_sides(sigma, b)
     assert t.base == b
-    assert close(slope(t.altitude, t.base), math.tan(sigma))
-    assert close(hypotenuse(t.altitude, t.base), t.hypotenuse)
+    assert_close(slope(t.altitude, t.base), math.tan(sigma))
+    assert_close(hypotenuse(t.altitude, t.base), t.hypotenuse)
 
 
 @given(molecule_sizes())

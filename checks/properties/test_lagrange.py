@@ -15,6 +15,7 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
+from checks.properties.closeness import assert_close, magnitude
 from checks.properties.strategies import (
     convex_lagrangian_coefficients,
     exact_masses,
@@ -33,15 +34,12 @@ from mechmodel.lagrange import Laurent
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
+FLOOR = REL * 1e-300  # subnormal magnitudes carry no relative precision: an absolute floor
 SEARCH = 1e-9  # relative error allowed to a Legendre value found by a bounded scalar search
 
 
 def _quartic(a: float, b: float):
     return lambda v: a * v**2 / 2 + b * v**4 / 4
-
-
-def _close(x: float, y: float, *scale: float, rel: float = REL) -> bool:
-    return abs(x - y) <= rel * (abs(x) + abs(y) + sum(abs(s) for s in scale) + 1e-300)
 
 
 # -- the Legendre contact transformation (12.11)-(12.13) --------------------------------------
@@ -74,7 +72,8 @@ def test_hamiltonian_is_pv_minus_l_at_the_tangent_point(
     a, b = coefficients
     h = _hamiltonian(a, b, p)
     v = h.argument
-    assert _close(h.value, p * v - _quartic(a, b)(v), p * v)
+    contact = p * v - _quartic(a, b)(v)
+    assert_close(h.value, contact, scale=magnitude(h.value, contact, p * v), abs=FLOOR)
     slope = a * v + b * v**3
     assert abs(slope - p) <= 1e-6 * (abs(p) + 1)
     with pytest.raises(ValueError, match="lower < upper"):
@@ -127,7 +126,7 @@ def test_l_e_and_h_are_one_energy(pairs: list[tuple[Fraction, Fraction]]) -> Non
     est = lagrange.estrangian(
         lagrange.quasi_velocities([float(m) for m in masses], [float(v) for v in velocities])
     )
-    assert _close(est, float(lag), rel=1e-12)
+    assert_close(est, float(lag), rel=1e-12, abs=FLOOR)
 
 
 @given(exact_masses(), exact_velocities())
@@ -162,13 +161,13 @@ def test_collision_line_is_normal_to_the_bisector_only_in_v_space(ratio: Fractio
     assert all(isinstance(x, Fraction) for x in (s.quasi_collision, s.quasi_bisector))
     # a float slope gives the same lines in floats
     f = lagrange.ke_ellipse_slopes(-float(ratio))
-    assert _close(f.mass_ratio, float(ratio))
-    assert _close(f.velocity_collision, -float(ratio))
-    assert _close(f.velocity_tangent, -float(ratio))
-    assert _close(f.quasi_collision * f.quasi_bisector, -1.0)
-    assert _close(f.quasi_bisector**2, f.momentum_bisector)
-    assert _close(f.momentum_tangent, -1.0)
-    assert _close(f.momentum_bisector, 1 / float(ratio))
+    assert_close(f.mass_ratio, float(ratio), abs=FLOOR)
+    assert_close(f.velocity_collision, -float(ratio), abs=FLOOR)
+    assert_close(f.velocity_tangent, -float(ratio), abs=FLOOR)
+    assert_close(f.quasi_collision * f.quasi_bisector, -1.0, abs=FLOOR)
+    assert_close(f.quasi_bisector**2, f.momentum_bisector, abs=FLOOR)
+    assert_close(f.momentum_tangent, -1.0, abs=FLOOR)
+    assert_close(f.momentum_bisector, 1 / float(ratio), abs=FLOOR)
 
 
 @given(st.lists(exact_masses(), min_size=1, max_size=3), st.floats(min_value=0.01, max_value=1e3))
@@ -178,9 +177,9 @@ def test_h_ellipse_radius_is_mass_times_l_ellipse_radius(masses: list[Fraction],
     ms = [float(m) for m in masses]
     radii = lagrange.energy_ellipse_radii(ms, e)
     for m, rv, rp in zip(ms, radii.velocity, radii.momentum, strict=True):
-        assert _close(rp, m * rv)
-        assert _close(m * rv**2 / 2, e)
-        assert _close(rp**2 / (2 * m), e)
+        assert_close(rp, m * rv, abs=FLOOR)
+        assert_close(m * rv**2 / 2, e, abs=FLOOR)
+        assert_close(rp**2 / (2 * m), e, abs=FLOOR)
 
 
 # -- the projectile family and its envelope (12.14)-(12.17) ------------------------------------
@@ -201,7 +200,8 @@ def test_each_trajectory_touches_the_envelope_once_where_the_model_says(
     scale = v0**2 / g + g * x**2 / v0**2 * (1 + math.tan(alpha) ** 2) + abs(x * math.tan(alpha))
     assert abs(gap - square) <= REL * 10 * scale
     assert gap >= -REL * 10 * scale
-    assert _close(lagrange.trajectory_height(xc, v0, alpha, g), yc, v0**2 / g)
+    height = lagrange.trajectory_height(xc, v0, alpha, g)
+    assert_close(height, yc, scale=magnitude(height, yc, v0**2 / g), abs=FLOOR)
     h = 1e-6 * max(xc, 1e-3)
     slope_gap = (
         lagrange.envelope_height(xc + h, v0, g)
@@ -221,11 +221,12 @@ def test_positions_lie_on_the_trajectory_curve(v0: float, alpha: float, g: float
     derivation fixes: y = x tan a - g x^k / (d v0^j cos^l a)."""
     fam = lagrange.projectile_family()
     x, y = lagrange.trajectory_position(t, v0, alpha, g)
-    assert _close(y, lagrange.trajectory_height(x, v0, alpha, g), v0 * t, g * t**2)
+    height = lagrange.trajectory_height(x, v0, alpha, g)
+    assert_close(y, height, scale=magnitude(y, height, v0 * t, g * t**2), abs=FLOOR)
     formula = x * math.tan(alpha) - g * x**fam.x_power / (
         float(fam.quadratic_denominator) * v0**fam.v0_power * math.cos(alpha) ** fam.cos_power
     )
-    assert _close(formula, y, v0 * t, g * t**2)
+    assert_close(formula, y, scale=magnitude(formula, y, v0 * t, g * t**2), abs=FLOOR)
 
 
 def test_projectile_family_is_the_books_algebra() -> None:
@@ -260,11 +261,11 @@ def test_kajobian_inverts_the_jacobian(r: float, phi: float) -> None:
             kj = sum(k[m][i] * j[i][n] for i in range(2))
             assert abs(kj - (m == n)) <= 1e-12 * (1 + r + 1 / r)
     g, h = lagrange.polar_metric(r, phi), lagrange.polar_inverse_metric(r, phi)
-    assert _close(g[0][0], 1)
-    assert _close(g[1][1], r**2)
+    assert_close(g[0][0], 1, abs=FLOOR)
+    assert_close(g[1][1], r**2, abs=FLOOR)
     assert abs(g[0][1]) <= 1e-12 * r
     assert abs(h[0][1]) <= 1e-12 / r
-    assert _close(h[1][1] * g[1][1], 1)
+    assert_close(h[1][1] * g[1][1], 1, abs=FLOOR)
 
 
 def _oscillator_state(orbit: tuple[float, float, float, float, float]) -> lagrange.PolarState:
@@ -339,10 +340,10 @@ def test_hamiltonian_is_total_energy(
     t = mass * (state.rdot**2 + state.r**2 * state.phidot**2) / 2
     h = lagrange.polar_hamiltonian(mass, state.r, f.radial_momentum, f.angular_momentum, u)
     legendre = f.radial_momentum * state.rdot + f.angular_momentum * state.phidot - (t - u)
-    assert _close(h, t + u, t, u)
-    assert _close(h, legendre, t, u)
+    assert_close(h, t + u, scale=magnitude(h, t + u, t, u), abs=FLOOR)
+    assert_close(h, legendre, scale=magnitude(h, legendre, t, u), abs=FLOOR)
     free = lagrange.polar_hamiltonian(mass, state.r, f.radial_momentum, f.angular_momentum)
-    assert _close(free, t, t)
+    assert_close(free, t, scale=magnitude(free, t, t), abs=FLOOR)
 
 
 def test_polar_mechanics_is_the_books_algebra() -> None:
@@ -502,8 +503,8 @@ def test_path_action_of_uniform_motion(v: float, duration: float) -> None:
     """S = integral L dt of a free particle at constant speed is m v^2 T / 2 (12.38)."""
     times = [duration * k / 10 for k in range(11)]
     lag = [v**2 / 2] * 11
-    assert _close(lagrange.path_action(lag, times), v**2 * duration / 2)
-    assert _close(lagrange.path_action(lag[:2], [0.0, duration]), v**2 * duration / 2)
+    assert_close(lagrange.path_action(lag, times), v**2 * duration / 2, abs=FLOOR)
+    assert_close(lagrange.path_action(lag[:2], [0.0, duration]), v**2 * duration / 2, abs=FLOOR)
     with pytest.raises(ValueError, match="at least two"):
         lagrange.path_action(lag[:1], [0.0])
 
@@ -534,12 +535,12 @@ def test_common_speed_is_the_speed_of_every_fragment(speed: float, angles: list[
     differing by 1% are not, whatever the units: a list of different speeds is an error, not
     an average."""
     velocities = [(speed * math.cos(a), speed * math.sin(a)) for a in angles]
-    assert _close(lagrange.common_speed(velocities), speed)
+    assert_close(lagrange.common_speed(velocities), speed, abs=FLOOR)
     assert lagrange.common_speed([(3, 4), (-4, 3), (0, 5), (5, 0)]) == 5
     assert lagrange.common_speed([[0, 1], [1, 0], [-(2**-0.5), 2**-0.5]]) == pytest.approx(1)
     assert lagrange.common_speed([(0, 0), (0.0, 0.0)]) == 0
     rounded = lagrange.common_speed([(speed, 0.0), (0.0, speed * (1 + 1e-12))])
-    assert _close(rounded, speed, rel=1e-11)
+    assert_close(rounded, speed, rel=1e-11, abs=FLOOR)
     with pytest.raises(ValueError, match="different speeds"):
         lagrange.common_speed([(speed, 0.0), (0.0, speed * 1.01)])
 
@@ -565,10 +566,10 @@ def test_energy_is_the_same_in_every_scaled_coordinate(
     fm = [float(m) for m in masses]
     quasi = lagrange.quasi_velocities(fm, [float(v) for v in velocities])
     got = lagrange.scaled_coordinate_energy(fm, quasi, Fraction(1, 2))
-    assert _close(got, float(lag))
-    assert _close(got, lagrange.estrangian(quasi))
+    assert_close(got, float(lag), abs=FLOOR)
+    assert_close(got, lagrange.estrangian(quasi), abs=FLOOR)
     heavier = lagrange.scaled_coordinate_energy([2 * m for m in fm], quasi, "1/2")
-    assert _close(heavier, got)  # E(V) has no mass in it
+    assert_close(heavier, got, abs=FLOOR)  # E(V) has no mass in it
 
 
 @given(exact_masses())
@@ -591,8 +592,8 @@ def test_ellipse_radius_ratio_is_one_over_the_mass(mass: float, energy: float) -
     """On each axis the L(v) = E ellipse reaches 1/m times as far as the H(p) = E ellipse,
     whatever the energy (Fig. 12.2): ratio times mass is 1."""
     ratio = lagrange.ellipse_radius_ratio(mass, energy)
-    assert _close(ratio * mass, 1.0)
-    assert _close(ratio, lagrange.ellipse_radius_ratio(mass))
+    assert_close(ratio * mass, 1.0, abs=FLOOR)
+    assert_close(ratio, lagrange.ellipse_radius_ratio(mass), abs=FLOOR)
 
 
 @given(exact_velocities(), exact_masses())
@@ -665,7 +666,7 @@ def test_contact_slope_and_abscissa_are_inverse(v0: float, g: float, u: float) -
     for x in (u * v0 * v0 / g, -u * v0 * v0 / g):
         tan = lagrange.contact_tangent(x, v0, g)
         alpha = math.atan(tan)
-        assert _close(lagrange.contact_distance(v0, alpha, g), x, rel=1e-12)
+        assert_close(lagrange.contact_distance(v0, alpha, g), x, rel=1e-12, abs=FLOOR)
         y = lagrange.trajectory_height(x, v0, alpha, g)
         assert abs(y - lagrange.envelope_by_maximum(x, v0, g)) <= 1e-10 * (
             v0 * v0 / g + g * x * x / v0**2
@@ -749,9 +750,14 @@ def test_polar_lagrangian_and_momenta_are_the_cartesian_ones(
     assert abs(lag - (mass * speed2 / 2 - u)) <= 1e-12 * (mass * speed2 + abs(u) + 1)
     terms = lagrange.polar_terms(mass, state.r, state.rdot, state.phidot)
     cross = pos[0] * vel[1] - pos[1] * vel[0]
-    assert _close(terms.angular_momentum, mass * cross, mass * state.r * math.sqrt(speed2))
+    momentum = terms.angular_momentum
+    swept = mass * state.r * math.sqrt(speed2)
+    assert_close(momentum, mass * cross, scale=magnitude(momentum, mass * cross, swept), abs=FLOOR)
     dot = (pos[0] * vel[0] + pos[1] * vel[1]) / state.r
-    assert _close(terms.radial_momentum, mass * dot, mass * math.sqrt(speed2))
+    momentum, speed = terms.radial_momentum, math.sqrt(speed2)
+    assert_close(
+        momentum, mass * dot, scale=magnitude(momentum, mass * dot, mass * speed), abs=FLOOR
+    )
     h = 1e-6 * state.r
     d_lag = (
         lagrange.polar_lagrangian(mass, state.r + h, state.rdot, state.phidot)
@@ -848,6 +854,6 @@ def test_metric_energy_is_the_cartesian_energy_of_any_jacobian(
     assert abs(lagrange.metric_kinetic_energy(mass, g, rates) - want) <= 1e-9 * (size + 1e-12)
     r, phi = 0.5 + abs(entries[0]), entries[1]
     polar = lagrange.metric_kinetic_energy(mass, lagrange.polar_metric(r, phi), rates)
-    assert _close(polar, lagrange.polar_lagrangian(mass, r, rates[0], rates[1], 0, phi))
+    assert_close(polar, lagrange.polar_lagrangian(mass, r, rates[0], rates[1], 0, phi), abs=FLOOR)
     with pytest.raises(ValueError, match="positive definite"):
         lagrange.metric_kinetic_energy(mass, [[1.0, 2.0], [2.0, 1.0]], rates)

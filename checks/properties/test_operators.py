@@ -13,6 +13,7 @@ import pytest
 from hypothesis import assume, example, given, target
 from hypothesis import strategies as st
 
+from checks.properties.closeness import assert_close, largest
 from checks.properties.strategies import (
     fraction_lengths,
     fraction_masses,
@@ -87,16 +88,6 @@ REL = 1e-12
 UNIT = ((1, 0), (0, 1))
 
 
-def close(a, b, scale: float = 1.0) -> bool:
-    """Entry by entry within REL of the scale of the entries."""
-    size = scale + max(abs(x) for row in (*a, *b) for x in row)
-    return all(
-        abs(x - y) <= REL * size
-        for ra, rb in zip(a, b, strict=True)
-        for x, y in zip(ra, rb, strict=True)
-    )
-
-
 def worst(a, b) -> float:
     return max(abs(x - y) for ra, rb in zip(a, b, strict=True) for x, y in zip(ra, rb, strict=True))
 
@@ -156,10 +147,11 @@ def test_ceiling_times_collision_rotates_by_the_bang_angle(m1: float, m2: float)
     assert 0 < angle.angle < math.pi
     assert abs(angle.pythagorean_sum - 1) <= 4 * REL
     c, s = angle.cos, angle.sin
-    assert close(scaled_collision_matrix(m1, m2), ((c, s), (s, -c)))
-    double = scaled_double_bang_matrix(m1, m2)
-    target(worst(double, rotation(-angle.angle)), label="rotation error")
-    assert close(double, rotation(-angle.angle))
+    bang, mirror = scaled_collision_matrix(m1, m2), ((c, s), (s, -c))
+    assert_close(bang, mirror, scale=1.0 + largest(bang, mirror))
+    double, turn_back = scaled_double_bang_matrix(m1, m2), rotation(-angle.angle)
+    target(worst(double, turn_back), label="rotation error")
+    assert_close(double, turn_back, scale=1.0 + largest(double, turn_back))
     assert abs(determinant(double) - 1) <= 4 * REL
     assert abs(c - (m1 - m2) / (m1 + m2)) <= 4 * REL
     expected_sin = 2 * math.sqrt(m1 * m2) / (m1 + m2)
@@ -175,7 +167,8 @@ def test_n_double_bangs_rotate_by_n_bang_angles(m1: float, m2: float, n: int) ->
     """(C M)^N in V space is the rotation by -N theta (5.13a): the bang clock ticks equal
     angles."""
     theta = bang_angle(m1, m2).angle
-    assert close(scaled_double_bang_matrix(m1, m2, n), rotation(-n * theta), scale=n)
+    power, turn_back = scaled_double_bang_matrix(m1, m2, n), rotation(-n * theta)
+    assert_close(power, turn_back, scale=n + largest(power, turn_back))
     assert multiple_bang_angle(m1, m2, n) == n * theta
     turn = double_bang_rotation_angle(m1, m2, n)
     assert -math.pi <= turn <= math.pi
@@ -248,8 +241,9 @@ def test_a_bang_keeps_the_length_of_the_mass_scaled_velocity(
 def test_mass_scaling_keeps_the_ceiling_and_floor(m1: Fraction, m2: Fraction) -> None:
     """The scaling S = diag(sqrt(m1), sqrt(m2)) commutes with C and F: a wall bounce is the same
     reflection in v and in V (5.7)."""
-    assert close(mass_scaled(ceiling_matrix(), m1, m2), ceiling_matrix())
-    assert close(mass_scaled(floor_matrix(), m1, m2), floor_matrix())
+    for wall in (ceiling_matrix(), floor_matrix()):
+        scaled = mass_scaled(wall, m1, m2)
+        assert_close(scaled, wall, scale=1.0 + largest(scaled, wall))
 
 
 @given(mirror_angles())
@@ -257,7 +251,8 @@ def test_a_reflection_squares_to_one_and_has_determinant_minus_one(phi: float) -
     """sigma_phi = sigma_A cos(phi) + sigma_B sin(phi) (5.15c) squares to 1 and has det -1;
     its mirror is at phi/2 (Fig. 5.3c)."""
     s = reflection(phi)
-    assert close(matrix_product(s, s), UNIT)
+    square = matrix_product(s, s)
+    assert_close(square, UNIT, scale=1.0 + largest(square, UNIT))
     assert abs(determinant(s) + 1) <= REL
     assert abs(mirror_angle(s) - phi / 2) <= REL
 
@@ -268,7 +263,8 @@ def test_two_reflections_make_a_rotation_by_twice_the_mirror_angle(a: float, b: 
     (5.17a, Fig. 5.3d-e), with det = (-1)(-1) = +1 (p. 5.18)."""
     product = matrix_product(reflection(2 * b), reflection(2 * a))
     assert abs(determinant(product) - 1) <= 4 * REL
-    assert close(product, rotation(2 * (b - a)))
+    turn_twice = rotation(2 * (b - a))
+    assert_close(product, turn_twice, scale=1.0 + largest(product, turn_twice))
     turn = mirror_pair_rotation(a, b)
     assert abs(math.remainder(turn - 2 * (b - a), 2 * math.pi)) <= 1e-11
     between = angle_between_mirrors(reflection(2 * a), reflection(2 * b))
@@ -325,7 +321,8 @@ def test_parallel_mirrors_half_a_translation_apart_make_it(p1: Fraction, a: Frac
 @given(mirror_angles(), mirror_angles())
 def test_rotations_compose_and_have_determinant_one(a: float, b: float) -> None:
     """R(a) R(b) = R(a + b): rotations never make a reflection, det R = +1 (p. 5.17-5.18)."""
-    assert close(matrix_product(rotation(a), rotation(b)), rotation(a + b))
+    composed, sum_turn = matrix_product(rotation(a), rotation(b)), rotation(a + b)
+    assert_close(composed, sum_turn, scale=1.0 + largest(composed, sum_turn))
     assert abs(determinant(rotation(a)) - 1) <= REL
     assert abs(math.remainder(rotation_angle(rotation(a)) - a, 2 * math.pi)) <= 1e-12
 
@@ -335,7 +332,8 @@ def test_pauli_and_quaternion_algebra() -> None:
     Pauli matrices square to +1 and Hamilton's i, j, k to -1 (p. 5.15); sigma_B sigma_A turns
     by +90 degrees and sigma_A sigma_B by -90 (p. 5.17)."""
     for name in ("A", "B", "C"):
-        assert close(sigma_product(name, name), UNIT)
+        square = sigma_product(name, name)
+        assert_close(square, UNIT, scale=1.0 + largest(square, UNIT))
     assert sigma_product("A", "B") == negated(sigma_product("B", "A"))
     assert sigma_product("A", "B") == ((0, 1), (-1, 0))
     assert [pauli_square(a) for a in "xyz"] == [1, 1, 1]

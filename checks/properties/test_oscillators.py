@@ -14,6 +14,7 @@ import pytest
 from hypothesis import example, given, target
 from hypothesis import strategies as st
 
+from checks.properties.closeness import assert_close
 from checks.properties.strategies import (
     derivative_orders,
     exact_distinct_radii,
@@ -33,10 +34,6 @@ from mechmodel import oscillators as osc
 pytestmark = pytest.mark.properties
 REL = 1e-12
 TRIG = 1e-9
-
-
-def close(x: float, y: float, scale: float, rel: float = REL) -> bool:
-    return abs(x - y) <= rel * scale
 
 
 # --- the orbit and its conserved quantities (11.5), (11.21)-(11.22), Fig. 11.8 --------------
@@ -62,7 +59,7 @@ def test_energy_is_constant_on_the_orbit(a: float, b: float, w: float, u: float)
     mass = 0.3
     value = osc.orbit_energy(mass, a, b, w, u / w)
     expected = mass * w * w * (a * a + b * b) / 2
-    assert close(value, expected, expected, TRIG)
+    assert_close(value, expected, rel=TRIG, scale=expected)
 
 
 @given(
@@ -86,9 +83,9 @@ def test_equal_areas_in_equal_times(
     first = osc.swept_area(a, b, w, u0 / w, u0 / w + dt)
     second = osc.swept_area(a, b, w, u1 / w, u1 / w + dt)
     rate = osc.areal_velocity(a, b, w) * dt
-    assert close(first, second, rate, TRIG)
-    assert close(first, rate, rate, TRIG)
-    assert close(osc.orbit_area(a, b), math.pi * a * b, a * b)
+    assert_close(first, second, rel=TRIG, scale=rate)
+    assert_close(first, rate, rel=TRIG, scale=rate)
+    assert_close(osc.orbit_area(a, b), math.pi * a * b, scale=a * b)
     assert osc.swept_area(a, b, w, u0 / w, u0 / w) == 0
     with pytest.raises(ValueError, match="precede"):
         osc.swept_area(a, b, w, u0 / w, u0 / w - 0.1 * period)
@@ -100,7 +97,7 @@ def test_area_law_coefficient_is_one_half(a: float, b: float, w: float, u: float
     r x v = a b w."""
     t = u / w
     r, v = osc.orbit_position(a, b, w, t), osc.orbit_velocity(a, b, w, t)
-    assert close(osc.areal_velocity(a, b, w) / abs(osc.cross(r, v)), 0.5, 1.0, TRIG)
+    assert_close(osc.areal_velocity(a, b, w) / abs(osc.cross(r, v)), 0.5, rel=TRIG, scale=1.0)
 
 
 @given(orbit_radii(), orbit_radii(), orbit_omegas())
@@ -111,9 +108,9 @@ def test_apsis_speeds_follow_from_angular_momentum(a: float, b: float, w: float)
     speeds = osc.apsis_speeds(a, b, w)
     v0 = osc.orbit_velocity(a, b, w, 0.0)
     v1 = osc.orbit_velocity(a, b, w, osc.time_to_perigee(w))
-    assert close(speeds.apogee, math.hypot(*v0), (a + b) * w, TRIG)
-    assert close(speeds.perigee, math.hypot(*v1), (a + b) * w, TRIG)
-    assert close(speeds.ratio, a / b, a / b)
+    assert_close(speeds.apogee, math.hypot(*v0), rel=TRIG, scale=(a + b) * w)
+    assert_close(speeds.perigee, math.hypot(*v1), rel=TRIG, scale=(a + b) * w)
+    assert_close(speeds.ratio, a / b, scale=a / b)
 
 
 @given(orbit_radii(), orbit_radii(), orbit_omegas(), orbit_phases(), derivative_orders())
@@ -127,7 +124,7 @@ def test_every_second_derivative_is_minus_omega_squared_times(
     two_on = osc.orbit_derivative(a, b, w, t, n + 2)
     scale = (a + b) * w ** (n + 2)
     for c, d in zip(here, two_on, strict=True):
-        assert close(d, -w * w * c, scale, TRIG)
+        assert_close(d, -w * w * c, rel=TRIG, scale=scale)
     assert osc.orbit_derivative_form(n + 4).omega_power == n + 4
     four_on = osc.orbit_derivative_form(n + 4)
     form = osc.orbit_derivative_form(n)
@@ -143,10 +140,10 @@ def test_derivatives_follow_the_orbit_a_quarter_turn_apart(
     t = u / w
     scaled = [c / w**n for c in osc.orbit_derivative(a, b, w, t, n)]
     advance = osc.derivative_phase(n)
-    assert close(advance, (n % 4) * math.pi / 2, 1.0)
+    assert_close(advance, (n % 4) * math.pi / 2, scale=1.0)
     ahead = osc.orbit_position(a, b, w, t + advance / w)
     for c, d in zip(scaled, ahead, strict=True):
-        assert close(c, d, a + b, TRIG)
+        assert_close(c, d, rel=TRIG, scale=a + b)
     assert osc.orbit_derivative(a, b, w, t) == osc.orbit_position(a, b, w, t)  # order 0: r
 
 
@@ -165,16 +162,16 @@ def test_power_is_the_rate_of_kinetic_energy(a: float, b: float, w: float, turns
     numeric = (kinetic(t + h) - kinetic(t - h)) / (2 * h)
     power = osc.force_power(mass, a, b, w, turns)
     scale = mass * w**3 * (a * a + b * b)
-    assert close(power, numeric, scale, 1e-6)
+    assert_close(power, numeric, rel=1e-6, scale=scale)
     angle = osc.force_velocity_angle(a, b, w, turns)
     if abs(power) > 1e-9 * scale:
         assert (angle < math.pi / 2) == (power > 0)
     # P = |F| |V| cos(theta), F = -m w^2 r; theta = 90 degrees at apogee and perigee
     r, v = osc.orbit_position(a, b, w, t), osc.orbit_velocity(a, b, w, t)
     magnitudes = mass * w * w * math.hypot(*r) * math.hypot(*v)
-    assert close(magnitudes * math.cos(angle), power, magnitudes, TRIG)
+    assert_close(magnitudes * math.cos(angle), power, rel=TRIG, scale=magnitudes)
     for apsis in (0, 0.25, 0.5, 0.75):
-        assert close(osc.force_velocity_angle(a, b, w, apsis), math.pi / 2, 1.0, TRIG)
+        assert_close(osc.force_velocity_angle(a, b, w, apsis), math.pi / 2, rel=TRIG, scale=1.0)
 
 
 # --- centrifugal and tidal forces (11.2)-(11.3), p. 171 --------------------------------------
@@ -187,8 +184,8 @@ def test_centrifugal_force_has_both_famous_forms(w: float, r: float) -> None:
     mass = 2.5
     v = w * r
     force = osc.centrifugal_force(mass, w, r)
-    assert close(force, mass * osc.centrifugal_acceleration(v, r), force)
-    assert close(osc.curvature_radius(v, force / mass), r, r)
+    assert_close(force, mass * osc.centrifugal_acceleration(v, r), scale=force)
+    assert_close(osc.curvature_radius(v, force / mass), r, scale=r)
 
 
 @given(exact_radii(), exact_radii())
@@ -281,7 +278,7 @@ def test_inverse_ellipse_is_a_quarter_turn(a: float, b: float) -> None:
     degrees (after (11.11))."""
     if abs(a - b) < 1e-3 * (a + b):
         return
-    assert close(osc.inverse_ellipse_rotation(a, b), math.pi / 2, 1.0, TRIG)
+    assert_close(osc.inverse_ellipse_rotation(a, b), math.pi / 2, rel=TRIG, scale=1.0)
 
 
 @given(orbit_radii(), orbit_radii(), form_angles())
@@ -294,14 +291,14 @@ def test_rotated_form_keeps_its_eigenvalues(a: float, b: float, angle: float) ->
     hi, lo = osc.form_eigenvalues(form.A, form.B, form.C)
     e1, e2 = sorted((1 / a**2, 1 / b**2), reverse=True)
     scale = e1 + e2
-    assert close(hi, e1, scale, TRIG)
-    assert close(lo, e2, scale, TRIG)
-    assert close(form.A + form.C, e1 + e2, scale, TRIG)
-    assert close(form.A * form.C - form.B**2, e1 * e2, scale * scale, TRIG)
+    assert_close(hi, e1, rel=TRIG, scale=scale)
+    assert_close(lo, e2, rel=TRIG, scale=scale)
+    assert_close(form.A + form.C, e1 + e2, rel=TRIG, scale=scale)
+    assert_close(form.A * form.C - form.B**2, e1 * e2, rel=TRIG, scale=scale * scale)
     ellipse = osc.ellipse_from_form(form.A, form.B, form.C)
     radii = sorted((ellipse.radius, ellipse.other_radius))
-    assert close(radii[0], min(a, b), a + b, 1e-6)
-    assert close(radii[1], max(a, b), a + b, 1e-6)
+    assert_close(radii[0], min(a, b), rel=1e-6, scale=a + b)
+    assert_close(radii[1], max(a, b), rel=1e-6, scale=a + b)
 
 
 @given(
@@ -323,7 +320,7 @@ def test_rotated_ellipse_is_read_back_turned(
     short_along = angle if a < b else angle + math.pi / 2
     long_along = angle if a > b else angle + math.pi / 2
     assert abs(math.sin(ellipse.angle - short_along)) <= TRIG
-    assert close(ellipse.radius, min(a, b), a + b, TRIG)
+    assert_close(ellipse.radius, min(a, b), rel=TRIG, scale=a + b)
     assert (
         abs(math.sin(osc.major_axis_angle(((form.A, form.B), (form.B, form.C))) - long_along))
         <= TRIG
@@ -388,18 +385,18 @@ def test_triad_radius_and_perpendicular_are_dual(
     a, b = ab
     v = osc.triad_vectors(a, a * b, phi0, k)
     q = osc.ellipse_form(float(a), float(b))
-    assert close(osc.form_value(q, v.r), 1.0, 1.0, TRIG)
-    assert close(osc.dot(v.p, v.r), 1.0, 1.0, TRIG)
+    assert_close(osc.form_value(q, v.r), 1.0, rel=TRIG, scale=1.0)
+    assert_close(osc.dot(v.p, v.r), 1.0, rel=TRIG, scale=1.0)
     phi_next = osc.triad_angle(a, b, phi0, k + 1)
-    assert close(math.atan2(v.p[1], v.p[0]), phi_next, 1.0, TRIG)
+    assert_close(math.atan2(v.p[1], v.p[0]), phi_next, rel=TRIG, scale=1.0)
     assert osc.triad_vectors(a, a * b, phi0) == osc.triad_vectors(a, a * b, phi0, 0)
     # with ab = 1 (11.18): r = (a/dx, b/dy) and p = (b/dx, a/dy) share their divisors
     unit = osc.triad_vectors(a, 1, phi0, k)
     bu = 1 / a
-    assert close(a / unit.r_x_divisor, unit.r[0], abs(unit.r[0]), TRIG)
-    assert close(bu / unit.r_y_divisor, unit.r[1], abs(unit.r[1]), TRIG)
-    assert close(unit.p_x_divisor, unit.r_x_divisor, abs(unit.r_x_divisor), TRIG)
-    assert close(unit.p_y_divisor, unit.r_y_divisor, abs(unit.r_y_divisor), TRIG)
+    assert_close(a / unit.r_x_divisor, unit.r[0], rel=TRIG, scale=abs(unit.r[0]))
+    assert_close(bu / unit.r_y_divisor, unit.r[1], rel=TRIG, scale=abs(unit.r[1]))
+    assert_close(unit.p_x_divisor, unit.r_x_divisor, rel=TRIG, scale=abs(unit.r_x_divisor))
+    assert_close(unit.p_y_divisor, unit.r_y_divisor, rel=TRIG, scale=abs(unit.r_y_divisor))
 
 
 @given(
@@ -440,7 +437,7 @@ def test_derivatives_through_r_or_v(
     high = osc.orbit_derivative(a, b, w, t, order)
     scale = (a + b) * w**order
     for c, d in zip(low, high, strict=True):
-        assert close(osc.derivative_in_terms_of(order, base, w, c), d, scale, TRIG)
+        assert_close(osc.derivative_in_terms_of(order, base, w, c), d, rel=TRIG, scale=scale)
     assert osc.derivative_in_terms_of(order, base, w, 1.0) == (-1) ** half_steps * w ** (
         2 * half_steps
     )
@@ -461,8 +458,8 @@ def test_swept_area_from_the_angular_momentum(
     dt = turns * osc.orbit_period(w)
     swept = osc.swept_area(a, b, w, u / w, u / w + dt)
     from_momentum = osc.area_swept(mass * a * b * w, mass, dt)
-    assert close(from_momentum, swept, swept, TRIG)
-    assert close(from_momentum, a * b * w * dt / 2, swept, TRIG)
+    assert_close(from_momentum, swept, rel=TRIG, scale=swept)
+    assert_close(from_momentum, a * b * w * dt / 2, rel=TRIG, scale=swept)
 
 
 @given(orbit_radii(), orbit_omegas())
@@ -476,13 +473,13 @@ def test_circular_motion_needs_omega_squared_r(r: float, w: float) -> None:
     h = 1e-4 / w
     plus, here, minus = (osc.orbit_position(r, r, w, s) for s in (h, 0.0, -h))
     difference = math.hypot(*(p - 2 * q + m for p, q, m in zip(plus, here, minus, strict=True)))
-    assert close(difference / (h * h), accel, accel, 1e-6)
-    assert close(osc.circular_acceleration_at_speed(r, v), accel, accel)
-    assert close(accel, osc.centrifugal_acceleration(v, r), accel)
-    assert close(osc.circular_force(mass, r, w), mass * accel, mass * accel)
-    assert close(osc.circular_force_at_speed(mass, r, v), mass * accel, mass * accel)
-    assert close(osc.curvature_radius_at_speed(v, accel), r, r)
-    assert close(osc.curvature_radius_at_rate(w, accel), r, r)
+    assert_close(difference / (h * h), accel, rel=1e-6, scale=accel)
+    assert_close(osc.circular_acceleration_at_speed(r, v), accel, scale=accel)
+    assert_close(accel, osc.centrifugal_acceleration(v, r), scale=accel)
+    assert_close(osc.circular_force(mass, r, w), mass * accel, scale=mass * accel)
+    assert_close(osc.circular_force_at_speed(mass, r, v), mass * accel, scale=mass * accel)
+    assert_close(osc.curvature_radius_at_speed(v, accel), r, scale=r)
+    assert_close(osc.curvature_radius_at_rate(w, accel), r, scale=r)
 
 
 @given(exact_radii(), exact_radii(), exact_radii(), exact_radii(), exact_radii())
@@ -509,8 +506,8 @@ def test_dual_vector_is_perpendicular_and_projects_to_one(a: float, b: float, u:
     r = (a * math.cos(u), b * math.sin(u))
     rdot = (-a * math.sin(u), b * math.cos(u))
     scale = (a + b) * (1 / a + 1 / b)
-    assert close(osc.dot(p, r), 1.0, scale, TRIG)
-    assert close(osc.dot(p, rdot), 0.0, scale, TRIG)
+    assert_close(osc.dot(p, r), 1.0, rel=TRIG, scale=scale)
+    assert_close(osc.dot(p, rdot), 0.0, rel=TRIG, scale=scale)
 
 
 @given(exact_radii(), exact_radii(), matrix_powers(), matrix_powers(), exact_radii(), exact_radii())
@@ -529,7 +526,9 @@ def test_operator_images_compose_as_powers(
 def test_image_slope_multiplies_the_tangent(a: float, b: float, power: int, angle: float) -> None:
     """tan of the image of a vector at ``angle`` is (a/b)^power tan(angle) ((11.16) for Q)."""
     expected = osc.slope_gain(a, b, power) * math.tan(angle)
-    assert close(osc.image_slope(a, b, power, angle), expected, abs(expected) + 1e-300, TRIG)
+    assert_close(
+        osc.image_slope(a, b, power, angle), expected, rel=TRIG, scale=abs(expected) + 1e-300
+    )
 
 
 @given(exact_radii(), exact_radii())
@@ -549,9 +548,9 @@ def test_triad_direction_is_a_geometric_slope_series(
     """tan phi_k = (a/b)^k tan phi_0 (11.19, (11.16)), so with phi_0 = pi/4
     cos phi_k = b^k/sqrt(a^2k + b^2k) and sin phi_k = a^k/sqrt(a^2k + b^2k)."""
     d = osc.triad_direction(a, b, math.tan(phi0), k)
-    assert close(d.cos**2 + d.sin**2, 1.0, 1.0, TRIG)
+    assert_close(d.cos**2 + d.sin**2, 1.0, rel=TRIG, scale=1.0)
     expected = (a / b) ** k * math.tan(phi0)
-    assert close(d.slope, expected, expected, TRIG)
+    assert_close(d.slope, expected, rel=TRIG, scale=expected)
     assert d.cos > 0  # the first quadrant is kept
     assert d.sin > 0
 
@@ -565,13 +564,13 @@ def test_book_triad_vectors(a: float, b: float, area: Fraction, j: int) -> None:
     before = osc.book_triad(a, b, area, 1.0, j - 2)
     here = osc.triad_direction(a, b, 1.0, j)
     previous = osc.triad_direction(a, b, 1.0, j - 1)
-    assert close((t.r[0] / a) ** 2 + (t.r[1] / b) ** 2, 1.0, 1.0, TRIG)
+    assert_close((t.r[0] / a) ** 2 + (t.r[1] / b) ** 2, 1.0, rel=TRIG, scale=1.0)
     for v in (t.r, t.p):
         norm = math.hypot(*v)
-        assert close(v[0] / norm, here.cos, 1.0, TRIG)
-        assert close(v[1] / norm, here.sin, 1.0, TRIG)
+        assert_close(v[0] / norm, here.cos, rel=TRIG, scale=1.0)
+        assert_close(v[1] / norm, here.sin, rel=TRIG, scale=1.0)
     ratio = a * b / float(area)
-    assert close(osc.dot(t.p, before.r), ratio, ratio, TRIG)
+    assert_close(osc.dot(t.p, before.r), ratio, rel=TRIG, scale=ratio)
     unit = osc.book_triad(a, b, 1, 1.0, j)
-    assert close(unit.p[0], b * previous.cos, a + b, TRIG)
-    assert close(unit.p[1], a * previous.sin, a + b, TRIG)
+    assert_close(unit.p[0], b * previous.cos, rel=TRIG, scale=a + b)
+    assert_close(unit.p[1], a * previous.sin, rel=TRIG, scale=a + b)
