@@ -25,6 +25,7 @@ from typing import Any
 import mpmath
 
 from mechmodel import inputs
+from mechmodel.planar import hypotenuse as hypotenuse  # the catalog names geometry.hypotenuse
 
 ARC_FUNCTIONS = ("sin", "cos", "tan")
 
@@ -305,14 +306,6 @@ def right_triangle_sides(angle: Any, base: Any) -> RightTriangle:
     segments = unit_circle_segments(angle)
     inputs.positive(base, "base")
     return RightTriangle(base, base * segments.tangent, base * segments.secant)
-
-
-def hypotenuse(altitude: Any, base: Any) -> Any:
-    """Hypotenuse r = √(a^2 + b^2) of the right triangle with legs a and b (Pythagoras,
-    line 1387; the 3-4-5 and 1-1-√2 triangles, lines 1585-1587)."""
-    inputs.real(altitude, "altitude")
-    inputs.real(base, "base")
-    return _sqrt(altitude**2 + base**2)
 
 
 # -- whirling rectangles and the golden ratio (Figs. 1.5 and 1.10) ----------------------------

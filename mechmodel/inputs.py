@@ -62,12 +62,18 @@ def positive(x: Any, name: str) -> Any:
     return x
 
 
-def count(n: Any, name: str, minimum: int = 0) -> int:
-    """``n`` as an ``int`` if it is an integer >= ``minimum``, else ``ValueError``."""
+def integer(n: Any, name: str) -> int:
+    """``n`` as an ``int`` if it is an integer of either sign (any integer type), else
+    ``ValueError``."""
     try:
-        value = operator.index(n)
+        return operator.index(n)
     except TypeError as err:
         raise ValueError(f"{name} must be an integer, got {n!r}") from err
+
+
+def count(n: Any, name: str, minimum: int = 0) -> int:
+    """``n`` as an ``int`` if it is an integer >= ``minimum``, else ``ValueError``."""
+    value = integer(n, name)
     if value < minimum:
         raise ValueError(f"{name} must be at least {minimum}, got {value}")
     return value

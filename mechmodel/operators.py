@@ -8,8 +8,9 @@ V = (sqrt(m1) v1, sqrt(m2) v2) (5.6) the energy ellipse is a circle, M is a refl
 double bang C M a rotation by the bang angle theta (5.10)-(5.13). Sections (5.15)-(5.18) name
 the reflections sigma_A, sigma_B, sigma_phi and their products.
 
-A matrix is a tuple of rows ``((a, b), (c, d))``; a list of lists is accepted too. Rational
-inputs (int, Fraction) keep matrices built from bangs exact; square roots and angles are floats.
+A matrix is a tuple of rows ``((a, b), (c, d))``; a list of lists is accepted too. Their algebra
+(products, powers, determinants, rotations) is ``mechmodel.planar``. Rational inputs (int,
+Fraction) keep matrices built from bangs exact; square roots and angles are floats.
 """
 
 from __future__ import annotations
@@ -23,50 +24,19 @@ from mechmodel import inputs
 from mechmodel.bangs import ceiling_bounce, floor_bounce
 from mechmodel.collisions import collide
 from mechmodel.exact import exact_sqrt
-
-Matrix = tuple[tuple[Any, Any], tuple[Any, Any]]
-
-
-# -- 2 x 2 matrix algebra (5.2) ----------------------------------------------------------------
-def as_matrix(a: Sequence[Sequence[Any]]) -> Matrix:
-    """A 2 x 2 matrix as a tuple of rows; ``ValueError`` for any other shape."""
-    if len(a) != 2 or any(len(row) != 2 for row in a):
-        raise ValueError("a matrix here is 2 x 2: two rows of two entries")
-    return ((a[0][0], a[0][1]), (a[1][0], a[1][1]))
-
-
-def from_columns(first: Sequence[Any], second: Sequence[Any]) -> Matrix:
-    """The matrix whose columns are the images of the unit vectors (1, 0) and (0, 1)."""
-    return ((first[0], second[0]), (first[1], second[1]))
+from mechmodel.planar import (
+    Matrix,
+    as_matrix,
+    determinant,
+    from_columns,
+    matrix_power,
+    matrix_product,
+    rotation,
+)
+from mechmodel.planar import hypotenuse as hypotenuse  # the catalog's operators.hypotenuse
 
 
-def matrix_product(a: Sequence[Sequence[Any]], b: Sequence[Sequence[Any]]) -> Matrix:
-    """The product A B: B acts first, then A (5.2b): row-by-column sums."""
-    a, b = as_matrix(a), as_matrix(b)
-    return tuple(tuple(a[i][0] * b[0][j] + a[i][1] * b[1][j] for j in range(2)) for i in range(2))  # type: ignore[return-value]
-
-
-def matrix_power(a: Sequence[Sequence[Any]], n: int) -> Matrix:
-    """A^n for n >= 0 (A^0 is the unit matrix): n bangs of the same kind in a row (5.4)."""
-    n = inputs.count(n, "n")
-    out: Matrix = ((1, 0), (0, 1))
-    for _ in range(n):
-        out = matrix_product(a, out)
-    return out
-
-
-def apply(a: Sequence[Sequence[Any]], v: Sequence[Any]) -> tuple[Any, Any]:
-    """The vector A v (5.2a)."""
-    a = as_matrix(a)
-    return (a[0][0] * v[0] + a[0][1] * v[1], a[1][0] * v[0] + a[1][1] * v[1])
-
-
-def determinant(a: Sequence[Sequence[Any]]) -> Any:
-    """det A = a d - b c: +1 for a rotation, -1 for a reflection (p. 5.18)."""
-    a = as_matrix(a)
-    return a[0][0] * a[1][1] - a[0][1] * a[1][0]
-
-
+# -- multiples of the unit matrix (p. 5.15) ---------------------------------------------------
 def scalar_of_identity(a: Sequence[Sequence[Any]]) -> Any:
     """The number s where A = s times the unit matrix; ``ValueError`` if A is not one."""
     a = as_matrix(a)
@@ -204,13 +174,6 @@ rotation_picture_bang_count.monotonic = False  # type: ignore[attr-defined]  # a
 
 
 # -- reflections, rotations and mirrors (5.15)-(5.18) -----------------------------------------
-def rotation(angle: Any) -> Matrix:
-    """R(phi) = ((cos, -sin), (sin, cos)): a right-handed turn by ``angle`` radians (5.17a)."""
-    inputs.real(angle, "angle")
-    c, s = math.cos(angle), math.sin(angle)
-    return ((c, -s), (s, c))
-
-
 def sigma_a() -> Matrix:
     """sigma_A = ((1, 0), (0, -1)) = sigma_Z (5.15a): the mirror along the x axis."""
     return ((1, 0), (0, -1))
@@ -495,7 +458,7 @@ def clock_energy_share(ticks: int) -> float:
 
 # -- integral right triangles (Fig. 5.2(f)) ---------------------------------------------------
 @dataclass(frozen=True)
-class RightTriangle:
+class BangTriangle:
     """The bang triangle: altitude 2 sqrt(m1 m2), base m1 - m2, hypotenuse m1 + m2 (5.10a)."""
 
     altitude: Any
@@ -504,7 +467,7 @@ class RightTriangle:
     altitude_coefficient: Any
 
 
-def integral_right_triangle(m1: Any, m2: Any) -> RightTriangle:
+def integral_right_triangle(m1: Any, m2: Any) -> BangTriangle:
     """The right triangle of the bang angle, scaled by M = m1 + m2 (Fig. 5.2(c), (f)).
 
     For perfect-square masses all three sides are integers; ``altitude_coefficient`` is the 4
@@ -513,14 +476,7 @@ def integral_right_triangle(m1: Any, m2: Any) -> RightTriangle:
     inputs.mass(m1, "m1")
     inputs.mass(m2, "m2")
     altitude = 2 * exact_sqrt(m1 * m2)
-    return RightTriangle(altitude, m1 - m2, m1 + m2, altitude**2 / (m1 * m2))
-
-
-def hypotenuse(a: Any, b: Any) -> Any:
-    """The hypotenuse sqrt(a^2 + b^2) of a right triangle (an integer where it is one)."""
-    inputs.positive(a, "a")
-    inputs.positive(b, "b")
-    return exact_sqrt(a * a + b * b)
+    return BangTriangle(altitude, m1 - m2, m1 + m2, altitude**2 / (m1 * m2))
 
 
 def perfect_square(root: int) -> int:

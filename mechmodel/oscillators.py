@@ -30,55 +30,20 @@ from typing import Any
 
 from mechmodel import inputs
 from mechmodel.exact import exact_sqrt
-
-Vector = tuple[Any, Any]
-Matrix = tuple[tuple[Any, Any], tuple[Any, Any]]
+from mechmodel.planar import (
+    Matrix,
+    Vector,
+    apply,
+    cross,
+    dot,
+    matrix_inverse,
+    matrix_power,
+    matrix_product,
+    rotation,
+)
 
 
 # -- small exact helpers ----------------------------------------------------------------------
-def dot(u: Sequence[Any], v: Sequence[Any]) -> Any:
-    """The dot product u.v of two plane vectors."""
-    return u[0] * v[0] + u[1] * v[1]
-
-
-def cross(u: Sequence[Any], v: Sequence[Any]) -> Any:
-    """The z component u_x v_y - u_y v_x of the cross product of two plane vectors."""
-    return u[0] * v[1] - u[1] * v[0]
-
-
-def apply(m: Matrix, v: Sequence[Any]) -> Vector:
-    """The matrix m acting on the column vector v."""
-    return (m[0][0] * v[0] + m[0][1] * v[1], m[1][0] * v[0] + m[1][1] * v[1])
-
-
-def matrix_product(m: Matrix, n: Matrix) -> Matrix:
-    """The 2x2 matrix product m.n."""
-    return (
-        (m[0][0] * n[0][0] + m[0][1] * n[1][0], m[0][0] * n[0][1] + m[0][1] * n[1][1]),
-        (m[1][0] * n[0][0] + m[1][1] * n[1][0], m[1][0] * n[0][1] + m[1][1] * n[1][1]),
-    )
-
-
-def matrix_inverse(m: Matrix) -> Matrix:
-    """The inverse of a 2x2 matrix (exact for exact entries)."""
-    det = m[0][0] * m[1][1] - m[0][1] * m[1][0]
-    if det == 0:
-        raise ValueError("a singular matrix has no inverse")
-    if isinstance(det, int):
-        det = Fraction(det)
-    return ((m[1][1] / det, -m[0][1] / det), (-m[1][0] / det, m[0][0] / det))
-
-
-def matrix_power(m: Matrix, n: Any) -> Matrix:
-    """m^n for any integer n (negative powers through the inverse)."""
-    n = int(n)
-    base = matrix_inverse(m) if n < 0 else m
-    out: Matrix = ((1, 0), (0, 1))
-    for _ in range(abs(n)):
-        out = matrix_product(out, base)
-    return out
-
-
 def rational_phase(half_angle_tan: Any) -> Vector:
     """(cos u, sin u) of the phase u with tan(u/2) = ``half_angle_tan``: the rational
     parametrization ((1 - s^2)/(1 + s^2), 2s/(1 + s^2)) of the unit circle, exact for
@@ -296,7 +261,7 @@ def eccentric_anomaly(a: Any, b: Any, point: Sequence[Any]) -> float:
     return math.atan2(point[1] / b, point[0] / a)
 
 
-def sector_area(a: Any, b: Any, start: Sequence[Any], end: Sequence[Any]) -> float:
+def elliptic_sector_area(a: Any, b: Any, start: Sequence[Any], end: Sequence[Any]) -> float:
     """Area swept counterclockwise by the radius from the centre between two points of the
     ellipse: the circular sector of the a-circle between their clock hands, squeezed by b/a
     (Fig. 11.1), a^2 du/2 * b/a."""
@@ -313,7 +278,7 @@ def swept_area(a: Any, b: Any, omega: Any, t0: Any, t1: Any) -> float:
     whole = math.floor((t1 - t0) / period)
     start = orbit_position(a, b, omega, t0)
     end = orbit_position(a, b, omega, t1)
-    return whole * orbit_area(a, b) + sector_area(a, b, start, end)
+    return whole * orbit_area(a, b) + elliptic_sector_area(a, b, start, end)
 
 
 # -- centrifugal and tidal forces (11.2)-(11.3), p. 171 --------------------------------------
@@ -554,13 +519,6 @@ def ellipse_from_form(A: Any, B: Any, C: Any) -> EllipseParameters:  # noqa: N80
     radius = _reciprocal(exact_sqrt(hi))
     other = _reciprocal(exact_sqrt(abs(lo)))
     return EllipseParameters(radius, other, angle, kind)
-
-
-def rotation(angle: Any) -> Matrix:
-    """Rotation by ``angle`` radians counterclockwise."""
-    inputs.real(angle, "angle")
-    c, s = math.cos(angle), math.sin(angle)
-    return ((c, -s), (s, c))
 
 
 @dataclass(frozen=True)

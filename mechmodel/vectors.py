@@ -8,6 +8,10 @@ epsilon-delta identity (1.A.7) and the double cross product A x (B x C) = (A.C) 
 Areas of parallelograms and triangles (Fig. 1.A.2) are computed independently of the cross
 product, by Heron's formula, so that the book's |A x B| and 1/2 |A x B| can be checked.
 
+The index-notation products are named for the symbols they are written with
+(``kronecker_dot``, ``levi_civita_cross``, ``levi_civita_determinant``); the plain plane
+products are ``mechmodel.planar.dot`` and ``cross``.
+
 Plain operators throughout: ``int`` and ``Fraction`` components give exact results (Heron's
 formula works with the squares of the sides, so areas of rational triangles stay exact where
 they are rational); floats give floats. Indices are 1-based as in the book.
@@ -26,6 +30,7 @@ import mpmath
 
 from mechmodel import inputs
 from mechmodel.exact import exact_sqrt
+from mechmodel.planar import cross
 
 DIMENSIONS = 3
 
@@ -61,14 +66,16 @@ def levi_civita(*indices: Any) -> int:
     return permutation_sign(indices)
 
 
-def dot(a: Sequence[Any], b: Sequence[Any]) -> Any:
-    """A.B = delta_ij A_i B_j = sum_i A_i B_i (1.A.4a)."""
+def kronecker_dot(a: Sequence[Any], b: Sequence[Any]) -> Any:
+    """The dot product written with the Kronecker delta, A.B = delta_ij A_i B_j = sum_i A_i B_i
+    (1.A.4a), in any dimension."""
     a, b = _vector(a, "A"), _vector(b, "B", len(a))
     return sum(kronecker(i + 1, j + 1) * a[i] * b[j] for i in range(len(a)) for j in range(len(b)))
 
 
-def cross(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
-    """(A x B)_k = epsilon_ijk A_i B_j (1.A.4b), three dimensions."""
+def levi_civita_cross(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
+    """The cross product written with the Levi-Civita symbol, (A x B)_k = epsilon_ijk A_i B_j
+    (1.A.4b), three dimensions."""
     a, b = _vector(a, "A", DIMENSIONS), _vector(b, "B", DIMENSIONS)
     return [
         sum(
@@ -78,12 +85,6 @@ def cross(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
         )
         for k in range(DIMENSIONS)
     ]
-
-
-def plane_cross(a: Sequence[Any], b: Sequence[Any]) -> Any:
-    """The scalar cross product A_x B_y - A_y B_x of plane vectors (1.A.1b)."""
-    a, b = _vector(a, "A", 2), _vector(b, "B", 2)
-    return a[0] * b[1] - a[1] * b[0]
 
 
 @dataclass(frozen=True)
@@ -135,10 +136,10 @@ def relative_components(
         return [-u[1], u[0]]
 
     return RelativeComponents(
-        b_along_a=dot(b, unit_a),
-        b_across_a=dot(b, turned(unit_a)),
-        a_along_b=dot(a, unit_b),
-        a_across_b=dot(a, turned(unit_b)),
+        b_along_a=kronecker_dot(b, unit_a),
+        b_across_a=kronecker_dot(b, turned(unit_a)),
+        a_along_b=kronecker_dot(a, unit_b),
+        a_across_b=kronecker_dot(a, turned(unit_b)),
     )
 
 
@@ -167,7 +168,7 @@ def coriolis_acceleration(angular_speed: Any, speed: Any, angle: Any) -> float:
     return float(mpmath.sqrt(sum(a * a for a in acceleration)))
 
 
-def determinant(matrix: Sequence[Sequence[Any]]) -> Any:
+def levi_civita_determinant(matrix: Sequence[Sequence[Any]]) -> Any:
     """det U = sum epsilon_{i j k ...} U_1i U_2j U_3k ... over all index tuples (1.A.5)."""
     rows = [list(r) for r in matrix]
     n = len(rows)
@@ -212,12 +213,12 @@ def triple_product(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> Any:
 def double_cross(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> list[Any]:
     """A x (B x C) computed as two cross products (the left side of the identity after
     (1.A.7))."""
-    return cross(a, cross(b, c))
+    return levi_civita_cross(a, levi_civita_cross(b, c))
 
 
 def bac_cab(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> list[Any]:
     """(A.C) B - (A.B) C, the right side of the double-cross identity after (1.A.7)."""
-    ac, ab = dot(a, c), dot(a, b)
+    ac, ab = kronecker_dot(a, c), kronecker_dot(a, b)
     return [ac * bi - ab * ci for bi, ci in zip(b, c, strict=True)]
 
 
@@ -276,7 +277,7 @@ def area_ratios(a: Sequence[Any], b: Sequence[Any]) -> AreaRatios:
     Fig. 1.A.2, their areas by Heron's formula divided by the plane cross product |A x B|:
     1, 1/2 and 1/2. Exact for rational components (the squared ratio is a rational square)."""
     a, b = _vector(a, "A", 2), _vector(b, "B", 2)
-    cross_ab = plane_cross(a, b)
+    cross_ab = cross(a, b)
     if isinstance(cross_ab, int):
         cross_ab = Fraction(cross_ab)
     if cross_ab == 0:

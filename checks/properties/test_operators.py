@@ -30,7 +30,6 @@ from mechmodel.bangs import ceiling_sequence
 from mechmodel.collisions import collide, momentum_line_slope
 from mechmodel.operators import (
     angle_between_mirrors,
-    apply,
     bang_angle,
     bang_facet_slope,
     bang_line_angle,
@@ -39,7 +38,6 @@ from mechmodel.operators import (
     clock_energy_share,
     collision_line_angle,
     collision_matrix,
-    determinant,
     double_bang_matrix,
     double_bang_rotation_angle,
     energy_line_inclination,
@@ -49,8 +47,6 @@ from mechmodel.operators import (
     integral_right_triangle,
     mass_scaled,
     mass_scaled_form,
-    matrix_power,
-    matrix_product,
     mirror_angle,
     mirror_pair_rotation,
     mirror_pair_translation,
@@ -66,7 +62,6 @@ from mechmodel.operators import (
     reflection,
     reflection_mirror_angle,
     rms_speed_ratio,
-    rotation,
     rotation_angle,
     rotation_picture_bang_count,
     scalar_of_identity,
@@ -82,6 +77,7 @@ from mechmodel.operators import (
     square_scalar,
     translation_mirror_separation,
 )
+from mechmodel.planar import apply, determinant, matrix_power, matrix_product, rotation
 
 pytestmark = pytest.mark.properties
 REL = 1e-12

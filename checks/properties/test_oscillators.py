@@ -30,6 +30,7 @@ from checks.properties.strategies import (
     triad_start_angles,
 )
 from mechmodel import oscillators as osc
+from mechmodel import planar
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
@@ -97,7 +98,7 @@ def test_area_law_coefficient_is_one_half(a: float, b: float, w: float, u: float
     r x v = a b w."""
     t = u / w
     r, v = osc.orbit_position(a, b, w, t), osc.orbit_velocity(a, b, w, t)
-    assert_close(osc.areal_velocity(a, b, w) / abs(osc.cross(r, v)), 0.5, rel=TRIG, scale=1.0)
+    assert_close(osc.areal_velocity(a, b, w) / abs(planar.cross(r, v)), 0.5, rel=TRIG, scale=1.0)
 
 
 @given(orbit_radii(), orbit_radii(), orbit_omegas())
@@ -386,7 +387,7 @@ def test_triad_radius_and_perpendicular_are_dual(
     v = osc.triad_vectors(a, a * b, phi0, k)
     q = osc.ellipse_form(float(a), float(b))
     assert_close(osc.form_value(q, v.r), 1.0, rel=TRIG, scale=1.0)
-    assert_close(osc.dot(v.p, v.r), 1.0, rel=TRIG, scale=1.0)
+    assert_close(planar.dot(v.p, v.r), 1.0, rel=TRIG, scale=1.0)
     phi_next = osc.triad_angle(a, b, phi0, k + 1)
     assert_close(math.atan2(v.p[1], v.p[0]), phi_next, rel=TRIG, scale=1.0)
     assert osc.triad_vectors(a, a * b, phi0) == osc.triad_vectors(a, a * b, phi0, 0)
@@ -506,8 +507,8 @@ def test_dual_vector_is_perpendicular_and_projects_to_one(a: float, b: float, u:
     r = (a * math.cos(u), b * math.sin(u))
     rdot = (-a * math.sin(u), b * math.cos(u))
     scale = (a + b) * (1 / a + 1 / b)
-    assert_close(osc.dot(p, r), 1.0, rel=TRIG, scale=scale)
-    assert_close(osc.dot(p, rdot), 0.0, rel=TRIG, scale=scale)
+    assert_close(planar.dot(p, r), 1.0, rel=TRIG, scale=scale)
+    assert_close(planar.dot(p, rdot), 0.0, rel=TRIG, scale=scale)
 
 
 @given(exact_radii(), exact_radii(), matrix_powers(), matrix_powers(), exact_radii(), exact_radii())
@@ -570,7 +571,7 @@ def test_book_triad_vectors(a: float, b: float, area: Fraction, j: int) -> None:
         assert_close(v[0] / norm, here.cos, rel=TRIG, scale=1.0)
         assert_close(v[1] / norm, here.sin, rel=TRIG, scale=1.0)
     ratio = a * b / float(area)
-    assert_close(osc.dot(t.p, before.r), ratio, rel=TRIG, scale=ratio)
+    assert_close(planar.dot(t.p, before.r), ratio, rel=TRIG, scale=ratio)
     unit = osc.book_triad(a, b, 1, 1.0, j)
     assert_close(unit.p[0], b * previous.cos, rel=TRIG, scale=a + b)
     assert_close(unit.p[1], a * previous.sin, rel=TRIG, scale=a + b)

@@ -27,7 +27,7 @@ from checks.properties.strategies import (
     series_orders,
 )
 from mechmodel import fields, series
-from mechmodel.operators import rotation
+from mechmodel.planar import rotation
 
 pytestmark = pytest.mark.properties
 REL = 1e-12

@@ -20,7 +20,7 @@ from checks.properties.strategies import (
     exact_vectors3,
     levi_civita_index_quads,
 )
-from mechmodel import vectors
+from mechmodel import planar, vectors
 
 pytestmark = pytest.mark.properties
 F = Fraction
@@ -58,8 +58,10 @@ def test_triple_product_is_the_determinant_and_cyclic(a, b, c) -> None:
     """A . (B x C) = det [A; B; C] = eps_ijk A_i B_j C_k (1.A.6), unchanged by a cyclic
     shift and reversed by a swap."""
     t = vectors.triple_product(a, b, c)
-    assert t == vectors.dot(a, vectors.cross(b, c))
-    assert t == vectors.determinant([a, b, c]) == vectors.determinant_by_minors([a, b, c])
+    assert t == vectors.kronecker_dot(a, vectors.levi_civita_cross(b, c))
+    assert (
+        t == vectors.levi_civita_determinant([a, b, c]) == vectors.determinant_by_minors([a, b, c])
+    )
     assert t == vectors.triple_product(b, c, a) == -vectors.triple_product(b, a, c)
 
 
@@ -75,16 +77,16 @@ def test_double_cross_expansion(a, b, c) -> None:
 def test_cross_product_is_antisymmetric_and_normal(a, b) -> None:
     """A x B = -B x A (anti-reflexive), it is perpendicular to both A and B, and
     |A x B|^2 + (A . B)^2 = |A|^2 |B|^2 (sine and cosine of one angle, (1.A.1))."""
-    ab = vectors.cross(a, b)
-    assert ab == [-x for x in vectors.cross(b, a)]
-    assert vectors.dot(a, ab) == 0 == vectors.dot(b, ab)
-    assert vectors.dot(ab, ab) + vectors.dot(a, b) ** 2 == vectors.dot(a, a) * vectors.dot(b, b)
+    dot, ab = vectors.kronecker_dot, vectors.levi_civita_cross(a, b)
+    assert ab == [-x for x in vectors.levi_civita_cross(b, a)]
+    assert dot(a, ab) == 0 == dot(b, ab)
+    assert dot(ab, ab) + dot(a, b) ** 2 == dot(a, a) * dot(b, b)
 
 
 @given(exact_square_matrices())
 def test_levi_civita_determinant_equals_minor_expansion(matrix: list[list[int]]) -> None:
     """det U as a Levi-Civita sum equals its expansion by minors (1.A.5) and numpy's value."""
-    det = vectors.determinant(matrix)
+    det = vectors.levi_civita_determinant(matrix)
     assert det == vectors.determinant_by_minors(matrix)
     assert abs(det - float(np.linalg.det(np.array(matrix, float)))) <= 1e-9 * (1 + abs(det))
 
@@ -102,8 +104,8 @@ def test_polar_products_equal_component_products(la, ta, lb, tb) -> None:
     b = (lb * math.cos(tb), lb * math.sin(tb))
     p = vectors.polar_products(la, ta, lb, tb)
     scale = 1e-12 * (1 + la * lb) * 10
-    assert abs(p.dot - vectors.dot(a, b)) <= scale
-    assert abs(p.cross - vectors.plane_cross(a, b)) <= scale
+    assert abs(p.dot - vectors.kronecker_dot(a, b)) <= scale
+    assert abs(p.cross - planar.cross(a, b)) <= scale
 
 
 @given(exact_plane_vectors(), exact_plane_vectors())
@@ -113,7 +115,7 @@ def test_triangles_are_half_the_cross_product(a, b) -> None:
     """By Heron's formula the parallelogram of A and B has area |A x B| and the A+B and A-B
     triangles half of it (Fig. 1.A.2), exactly (rational ratios stay Fractions); parallel
     vectors span no figure."""
-    assume(vectors.plane_cross(a, b) != 0)
+    assume(planar.cross(a, b) != 0)
     r = vectors.area_ratios(a, b)
     assert r.parallelogram == 1
     assert r.sum_triangle == Fraction(1, 2) == r.difference_triangle
@@ -133,7 +135,7 @@ def test_heron_area_is_half_the_cross_product_anywhere(
     """Heron's formula in the squared sides gives the area of any triangle P, Q, R as
     1/2 |(Q - P) x (R - P)| (Fig. 1.A.2): unchanged when the triangle is moved, exact for
     rational vertices and within rounding for float ones."""
-    cross = vectors.plane_cross([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]])
+    cross = planar.cross([b[0] - a[0], b[1] - a[1]], [c[0] - a[0], c[1] - a[1]])
     area_sq = vectors.heron_area_squared(a, b, c)
     assert area_sq == cross**2 / 4
     moved = [[p[0] + shift[0], p[1] + shift[1]] for p in (a, b, c)]
@@ -160,10 +162,10 @@ def test_relative_components_give_the_products(la, ta, lb, tb) -> None:
     scale = 1e-12 * (1 + la * lb) * 10
     assert abs(c.b_along_a**2 + c.b_across_a**2 - lb**2) <= scale * (1 + lb / la)
     assert abs(c.a_along_b**2 + c.a_across_b**2 - la**2) <= scale * (1 + la / lb)
-    assert abs(la * c.b_along_a - vectors.dot(a, b)) <= scale
-    assert abs(lb * c.a_along_b - vectors.dot(a, b)) <= scale
-    assert abs(la * c.b_across_a - vectors.plane_cross(a, b)) <= scale
-    assert abs(lb * c.a_across_b + vectors.plane_cross(a, b)) <= scale
+    assert abs(la * c.b_along_a - vectors.kronecker_dot(a, b)) <= scale
+    assert abs(lb * c.a_along_b - vectors.kronecker_dot(a, b)) <= scale
+    assert abs(la * c.b_across_a - planar.cross(a, b)) <= scale
+    assert abs(lb * c.a_across_b + planar.cross(a, b)) <= scale
 
 
 @given(
@@ -179,7 +181,7 @@ def test_coriolis_acceleration_is_twice_omega_cross_v(w, v, theta) -> None:
     |2 omega x v| for omega along z and v at angle theta to it (line 16508)."""
     omega = [0.0, 0.0, w]
     vel = [v * math.sin(theta), 0.0, v * math.cos(theta)]
-    expected = 2 * math.sqrt(sum(x * x for x in vectors.cross(omega, vel)))
+    expected = 2 * math.sqrt(sum(x * x for x in vectors.levi_civita_cross(omega, vel)))
     got = vectors.coriolis_acceleration(w, v, theta)
     assert abs(got - expected) <= 1e-12 * (1 + 2 * w * v)
 
@@ -196,7 +198,7 @@ def test_triangle_areas_by_heron(la, lb, theta, shear) -> None:
     its apex lies along the line parallel to the base."""
     a = (la, 0.0)
     b = (lb * math.cos(theta), lb * math.sin(theta))
-    half_cross = abs(vectors.plane_cross(a, b)) / 2
+    half_cross = abs(planar.cross(a, b)) / 2
     assert abs(vectors.sum_triangle_area(la, lb, theta) - half_cross) <= 1e-9 * (la + lb) ** 2
     base, height = la, lb * math.sin(theta)
     area = vectors.triangle_area([0.0, 0.0], [base, 0.0], [shear, height])

@@ -8,11 +8,9 @@ from typing import TYPE_CHECKING
 from mechmodel.bangs import bang_history, ceiling_sequence, floor_bounce
 from mechmodel.collisions import kinetic_energy
 from mechmodel.operators import (
-    apply,
     bang_angle,
     integral_right_triangle,
     mass_scaling,
-    matrix_product,
     mirror_angle,
     mirror_pair_rotation,
     reflection,
@@ -21,6 +19,7 @@ from mechmodel.operators import (
     scaled_double_bang_matrix,
     sigma,
 )
+from mechmodel.planar import apply, matrix_product
 from reports.figures import ellipse_points, figure, value_of
 
 if TYPE_CHECKING:

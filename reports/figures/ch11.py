@@ -7,12 +7,12 @@ from typing import TYPE_CHECKING
 
 from mechmodel.oscillators import (
     apsis_speeds,
-    ellipse_form,
-    matrix_inverse,
+    dual_ellipse,
     orbit_derivative,
     orbit_period,
     orbit_position,
     triad_angle,
+    triad_vectors,
 )
 from mechmodel.rotation import (
     cycloid_kind,
@@ -136,20 +136,19 @@ def _triads(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ab = value_of(claims, "ch11.triad.ab")
     a = 2.0
     b = ab / a
-    q = ellipse_form(a, b)
-    qi = matrix_inverse(q)
+    dual = dual_ellipse(a, b)
     fig.set_size_inches(6.0, 5.0)
     ax = fig.add_subplot()
     xs, ys = ellipse_points(a, b)
     ax.plot(xs, ys, color="C0", label=r"$Q$-ellipse $\mathbf{r}\cdot Q\cdot\mathbf{r} = 1$")
-    xs, ys = ellipse_points(1 / math.sqrt(qi[0][0]), 1 / math.sqrt(qi[1][1]))
+    xs, ys = ellipse_points(dual.radius_x, dual.radius_y)
     ax.plot(
         xs, ys, "--", color="C1", label=r"dual ellipse $\mathbf{p}\cdot Q^{-1}\cdot\mathbf{p} = 1$"
     )
     for k in range(-2, 3):
         phi = triad_angle(a, b, phi0, k)
-        r = (a * math.cos(phi), b * math.sin(phi))
-        p = (q[0][0] * r[0], q[1][1] * r[1])
+        triad = triad_vectors(a, ab, phi0, k)
+        r, p = triad.r, triad.p
         ax.plot([0, r[0]], [0, r[1]], color="C0", linewidth=1)
         ax.plot([0, p[0]], [0, p[1]], color="C1", linewidth=1)
         reach = 2.2

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from mechmodel.vectors import area_ratios, heron_area_squared, plane_cross
+from mechmodel.planar import cross
+from mechmodel.vectors import area_ratios, heron_area_squared
 from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
@@ -28,7 +29,7 @@ def _areas(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     a, b = (3, 1), (1, 2)
     ratios = area_ratios(a, b)
     half = value_of(claims, "chA1.area.triangle")
-    cross = plane_cross(a, b)
+    cross_ab = cross(a, b)
     s, d = (a[0] + b[0], a[1] + b[1]), (a[0] - b[0], a[1] - b[1])
     panels = [
         ("parallelogram", [(0, 0), a, s, b], ratios.parallelogram),
@@ -65,7 +66,7 @@ def _areas(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.text(
         0.97,
         0.04,
-        rf"$|\mathbf{{A}}\times\mathbf{{B}}| = {cross}$; the book's share ${half:g}$",
+        rf"$|\mathbf{{A}}\times\mathbf{{B}}| = {cross_ab}$; the book's share ${half:g}$",
         transform=ax.transAxes,
         ha="right",
         fontsize="small",
