@@ -25,6 +25,7 @@ from typing import Any, Literal
 
 from mechmodel import inputs
 from mechmodel.collisions import collide
+from mechmodel.ellipse import energy_ellipse as energy_ellipse  # the catalog names bangs.*
 
 BangKind = Literal["01", "12", "02"]
 FLOOR, BALLS, CEILING = "01", "12", "02"
@@ -212,41 +213,7 @@ def galileo_shifted_collision(
     return ShiftedCollision(before, hit.after, transfer)
 
 
-# -- energy ellipse and the Earth's share ---------------------------------------------------
-@dataclass(frozen=True)
-class EnergyEllipse:
-    """The KE ellipse m1 v1^2 + m2 v2^2 = 2 KE through a state (3.7b), Fig. 4.7c and 4.9."""
-
-    twice_energy: Any
-    radius_v1: Any
-    radius_v2: Any
-
-    @property
-    def energy(self) -> Any:
-        """The kinetic energy KE."""
-        return self.twice_energy / 2
-
-    @property
-    def minor_radius(self) -> Any:
-        """The shorter semi-axis (along the heavier ball's velocity)."""
-        return min(self.radius_v1, self.radius_v2)
-
-    @property
-    def major_radius(self) -> Any:
-        """The longer semi-axis (along the lighter ball's velocity)."""
-        return max(self.radius_v1, self.radius_v2)
-
-
-def energy_ellipse(m1: Any, m2: Any, v1: Any, v2: Any) -> EnergyEllipse:
-    """The energy ellipse of two balls: semi-axes sqrt(2 KE/m1) along v1, sqrt(2 KE/m2) along v2."""
-    inputs.mass(m1, "m1")
-    inputs.mass(m2, "m2")
-    inputs.real(v1, "v1")
-    inputs.real(v2, "v2")
-    twice = m1 * v1 * v1 + m2 * v2 * v2
-    return EnergyEllipse(twice, math.sqrt(twice / m1), math.sqrt(twice / m2))
-
-
+# -- the Earth's share (the energy ellipse of Figs. 4.7c and 4.9 is mechmodel.ellipse) ---------
 @dataclass(frozen=True)
 class EarthRecoil:
     """What the Earth (mass M) takes from a ball (mass m) bouncing off it (Fig. 4.2a)."""

@@ -8,10 +8,11 @@ the inputs carry (the book's scaled units or SI).
 
 The geometry of chapters 2-3 lives in the velocity-velocity plane (V1, V2) = (V_SUV, V_VW):
 a collision moves the point IN to FIN along the momentum line of slope -m1/m2 (2.4), (3.6);
-the kinetic energy fixes an ellipse of radii sqrt(2 KE/m1), sqrt(2 KE/m2) (3.7). A Galilean
-frame moving at ``u`` subtracts ``u`` from every velocity (Fig. 2.3-2.5); the centre-of-momentum
-(COM) frame is the one moving at V_COM. Square roots stay exact for Fraction inputs that are
-perfect squares and are floats otherwise.
+the kinetic energy fixes an ellipse of radii sqrt(2 KE/m1), sqrt(2 KE/m2) (3.7). The kinetic
+energy and its ellipse are ``mechmodel.ellipse`` (re-exported here where the catalog names
+them). A Galilean frame moving at ``u`` subtracts ``u`` from every velocity (Fig. 2.3-2.5); the
+centre-of-momentum (COM) frame is the one moving at V_COM. Square roots stay exact for Fraction
+inputs that are perfect squares and are floats otherwise.
 """
 
 from __future__ import annotations
@@ -23,6 +24,9 @@ from fractions import Fraction
 from typing import Any
 
 from mechmodel import inputs
+from mechmodel.ellipse import EnergyEllipse, kinetic_energy
+from mechmodel.ellipse import ellipse_radii as ellipse_radii  # the catalog's collisions.*
+from mechmodel.ellipse import energy_ellipse as energy_ellipse
 
 
 @dataclass(frozen=True)
@@ -115,26 +119,9 @@ def collide(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any = 1) -> Collisi
     return Collision((m1, m2), (v1, v2), after)
 
 
-def _pairs(masses: Sequence[Any], velocities: Sequence[Any]) -> list[tuple[Any, Any]]:
-    if len(masses) != len(velocities) or not masses:
-        raise ValueError("give one velocity per mass (and at least one mass)")
-    for i, (m, v) in enumerate(zip(masses, velocities, strict=True), start=1):
-        inputs.mass(m, f"masses[{i - 1}]")
-        inputs.real(v, f"velocities[{i - 1}]")
-    return list(zip(masses, velocities, strict=True))
-
-
 def momentum(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
     """Total momentum P = sum m v (eq. (2.5a)); finite masses only."""
-    return sum(m * v for m, v in _pairs(masses, velocities))
-
-
-def kinetic_energy(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
-    """Total kinetic energy KE = sum 1/2 m v^2 (eq. (3.5b)); finite masses only.
-
-    The 1/2 is written as a division so that integer and Fraction inputs stay exact.
-    """
-    return sum(m * v * v for m, v in _pairs(masses, velocities)) / 2
+    return sum(m * v for m, v in inputs.bodies(masses, velocities))
 
 
 def kinetic_energy_change(m: Any, v_in: Any, v_fin: Any) -> Any:
@@ -146,7 +133,7 @@ def kinetic_energy_change(m: Any, v_in: Any, v_fin: Any) -> Any:
 
 def center_of_mass_velocity(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
     """Velocity of the centre of momentum, V_COM = sum m v / sum m (eq. (2.5b))."""
-    pairs = _pairs(masses, velocities)
+    pairs = inputs.bodies(masses, velocities)
     return sum(m * v for m, v in pairs) / sum(m for m, _ in pairs)
 
 
@@ -287,7 +274,7 @@ def elastic_com_velocity(v_in: Any, v_fin: Any) -> Any:
     return (v_fin - at_rest) / per_unit
 
 
-# -- lines, angles and energy ellipses (Fig. 3.1, (3.6)-(3.7)) -------------------------------
+# -- lines, angles and the energy ellipse's form (Fig. 3.1, (3.6)-(3.7)) ----------------------
 
 
 def _is_mp(x: Any) -> bool:
@@ -332,81 +319,12 @@ def line_slope(angle: Any) -> Any:
     return math.tan(angle)
 
 
-def ellipse_radii(m1: Any, m2: Any, energy: Any) -> tuple[Any, Any]:
-    """Radii (a, b) = (sqrt(2 KE/m1), sqrt(2 KE/m2)) of the KE ellipse (3.7b).
-
-    ``a`` lies along the V1 axis, ``b`` along V2: 1/2 m1 a^2 = 1/2 m2 b^2 = KE.
-    """
-    inputs.mass(m1, "m1")
-    inputs.mass(m2, "m2")
-    inputs.real(energy, "energy")
-    if energy < 0:
-        raise ValueError(f"a kinetic energy is not negative, got {energy!r}")
-    return (_sqrt(2 * energy / m1), _sqrt(2 * energy / m2))
-
-
 def energy_ellipse_form(m1: Any, m2: Any, energy: Any, v1: Any, v2: Any) -> Any:
     """The left side V1^2/(2 KE/m1) + V2^2/(2 KE/m2) of the KE ellipse (3.7a) at the point
     (v1, v2): the kinetic energy of that point over ``energy`` = KE > 0, so 1 on the ellipse,
     less inside it and more outside."""
     inputs.positive(energy, "energy")
     return kinetic_energy((m1, m2), (v1, v2)) / energy
-
-
-def ellipse_point(a: Any, b: Any, angle: Any) -> tuple[Any, Any]:
-    """Point (a cos s, b sin s) of the ellipse of radii a, b (Exercise Figs. 3.6-3.7)."""
-    inputs.positive(a, "a")
-    inputs.positive(b, "b")
-    inputs.real(angle, "angle")
-    if _is_mp(angle):
-        import mpmath
-
-        return (a * mpmath.cos(angle), b * mpmath.sin(angle))
-    return (a * math.cos(angle), b * math.sin(angle))
-
-
-@dataclass(frozen=True)
-class EnergyEllipse:
-    """The KE ellipse 1/2 m1 V1^2 + 1/2 m2 V2^2 = KE through the point (v1, v2) (Fig. 3.1).
-
-    ``energy`` is KE, ``radii`` its (a, b) of (3.7b), ``tangent_slope`` the slope of the
-    ellipse at the point, ``momentum_slope`` the slope -m1/m2 of the momentum line. At the COM
-    point (V, V) the two slopes agree; in the COM frame the tangent where the momentum line cuts
-    the ellipse is 1, the slope of the COM line (Fig. 3.1, the duality of line 2419).
-    """
-
-    masses: tuple[Any, Any]
-    point: tuple[Any, Any]
-
-    @property
-    def energy(self) -> Any:
-        """Kinetic energy KE of the point (3.5b)."""
-        return kinetic_energy(self.masses, self.point)
-
-    @property
-    def radii(self) -> tuple[Any, Any]:
-        """Radii (a, b) along V1 and V2 (3.7b)."""
-        return ellipse_radii(self.masses[0], self.masses[1], self.energy)
-
-    @property
-    def tangent_slope(self) -> Any:
-        """Slope dV2/dV1 = -m1 v1 / (m2 v2) of the ellipse at the point; ValueError where the
-        tangent is vertical (v2 = 0)."""
-        (m1, m2), (v1, v2) = self.masses, self.point
-        if v2 == 0:
-            raise ValueError("the tangent is vertical where V2 = 0")
-        return -(m1 * v1) / (m2 * v2)
-
-    @property
-    def momentum_slope(self) -> Any:
-        """Slope -m1/m2 of the momentum line through the point ((2.4), (3.6b))."""
-        return momentum_line_slope(*self.masses)
-
-
-def energy_ellipse(m1: Any, m2: Any, v1: Any, v2: Any) -> EnergyEllipse:
-    """The KE ellipse of bodies m1, m2 through the velocity point (v1, v2) (Fig. 3.1, (3.7))."""
-    _pairs((m1, m2), (v1, v2))
-    return EnergyEllipse((m1, m2), (v1, v2))
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import operator
+from collections.abc import Sequence
 from typing import Any
 
 
@@ -77,3 +78,14 @@ def count(n: Any, name: str, minimum: int = 0) -> int:
     if value < minimum:
         raise ValueError(f"{name} must be at least {minimum}, got {value}")
     return value
+
+
+def bodies(masses: Sequence[Any], velocities: Sequence[Any]) -> list[tuple[Any, Any]]:
+    """The (mass, velocity) pairs of at least one body with one velocity per mass, each mass
+    finite and positive and each velocity finite; else ``ValueError`` naming the entry."""
+    if len(masses) != len(velocities) or not masses:
+        raise ValueError("give one velocity per mass (and at least one mass)")
+    for i, (m, v) in enumerate(zip(masses, velocities, strict=True)):
+        mass(m, f"masses[{i}]")
+        real(v, f"velocities[{i}]")
+    return list(zip(masses, velocities, strict=True))

@@ -46,6 +46,7 @@ from typing import Any
 import numpy as np
 
 from mechmodel import inputs
+from mechmodel.ellipse import kinetic_energy, momentum_radius, velocity_radius
 from mechmodel.exact import exact_sqrt
 
 # -------------------------------------------------------------------------------------------
@@ -272,23 +273,9 @@ def time_derivative(p: Laurent, rates: Mapping[str, Laurent]) -> Laurent:
 
 
 # -------------------------------------------------------------------------------------------
-# Kinetic energy in v, V and p: (12.1)-(12.9), Fig. 12.1
+# Kinetic energy in v, V and p: (12.1)-(12.9), Fig. 12.1 (L(v) of free bodies, (12.3), is
+# mechmodel.ellipse.kinetic_energy)
 # -------------------------------------------------------------------------------------------
-
-
-def kinetic_energy(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
-    """Lagrangian L(v) = sum_k m_k v_k^2 / 2 of free particles (12.3), J (or scaled units).
-
-    Exact for ``int`` and ``Fraction`` inputs.
-    """
-    _same_length(masses, velocities)
-    return (
-        sum(
-            inputs.mass(m) * inputs.real(v, "velocity") ** 2
-            for m, v in zip(masses, velocities, strict=True)
-        )
-        / 2
-    )
 
 
 def quasi_velocities(masses: Sequence[Any], velocities: Sequence[Any]) -> list[Any]:
@@ -473,7 +460,8 @@ def energy_ellipse_radii(masses: Sequence[Any], energy: Any) -> EllipseRadii:
     inputs.positive(energy, "energy")
     ms = [inputs.mass(m) for m in masses]
     return EllipseRadii(
-        velocity=[_sqrt(2 * energy / m) for m in ms], momentum=[_sqrt(2 * energy * m) for m in ms]
+        velocity=[velocity_radius(m, energy) for m in ms],
+        momentum=[momentum_radius(m, energy) for m in ms],
     )
 
 

@@ -25,6 +25,7 @@ from typing import Any
 from mechmodel import inputs
 from mechmodel.collisions import Collision, collide
 from mechmodel.contact import SoftCollision, soft_collision
+from mechmodel.ellipse import kinetic_energy, velocity_radius
 
 
 @dataclass(frozen=True)
@@ -438,7 +439,7 @@ def pellet_rocket(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any) -> Pell
     )
 
 
-def retained_ellipse_radius(mass: Any, radius_in: Any, retention: Any) -> float:
+def retained_ellipse_radius(mass: Any, radius_in: Any, retention: Any) -> Any:
     """Radius, along the velocity axis of ``mass``, of the energy ellipse that keeps the share
     ``retention`` = KE_FIN / KE_IN of the energy of the ellipse of radius ``radius_in`` (Fig.
     8.3b): the ellipse (3.7) reaches V = radius on that axis, where KE = mass radius^2 / 2."""
@@ -447,8 +448,8 @@ def retained_ellipse_radius(mass: Any, radius_in: Any, retention: Any) -> float:
     inputs.real(retention, "retention")
     if not 0 <= retention <= 1:
         raise ValueError(f"a retention ratio lies between 0 and 1, got {retention!r}")
-    energy_in = mass * radius_in * radius_in / 2
-    return math.sqrt(2 * retention * energy_in / mass)
+    energy_in = kinetic_energy((mass,), (radius_in,))
+    return velocity_radius(mass, retention * energy_in)
 
 
 @dataclass(frozen=True)

@@ -39,7 +39,6 @@ from mechmodel.bangs import (
     ceiling_bounce,
     ceiling_sequence,
     earth_recoil,
-    energy_ellipse,
     figures_of_agreement,
     floor_bounce,
     floor_impulse,
@@ -400,27 +399,6 @@ def test_an_elastic_bang_changes_neither_momentum_nor_energy(
     Delta P = 0 and Delta KE = 0, exactly for exact inputs."""
     changes = bang_changes(m1, m2, v1, v2)
     assert (changes.momentum_change, changes.energy_change) == (0, 0)
-
-
-@given(fraction_masses(), fraction_masses(), fraction_velocities(), fraction_velocities())
-@example(Fraction(7), Fraction(1), Fraction(1), Fraction(-1))  # the X2 start of Fig. 4.7c
-def test_the_energy_ellipse_is_the_kinetic_energy_through_the_state(
-    m1: Fraction, m2: Fraction, v1: Fraction, v2: Fraction
-) -> None:
-    """The KE ellipse m1 v1^2 + m2 v2^2 = 2 KE (3.7b), Fig. 4.7c: its energy is the balls'
-    kinetic energy exactly, it passes through the state (v1, v2), and its shorter semi-axis
-    lies along the heavier ball's velocity."""
-    ellipse = energy_ellipse(m1, m2, v1, v2)
-    assert ellipse.energy == kinetic_energy((m1, m2), (v1, v2))
-    if ellipse.twice_energy:
-        on = float(v1) ** 2 / ellipse.radius_v1**2 + float(v2) ** 2 / ellipse.radius_v2**2
-        assert math.isclose(on, 1, rel_tol=REL)
-        heavy, light = (
-            (ellipse.radius_v1, ellipse.radius_v2)
-            if m1 >= m2
-            else (ellipse.radius_v2, ellipse.radius_v1)
-        )
-        assert (ellipse.minor_radius, ellipse.major_radius) == (heavy, light)
 
 
 @given(

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import importlib
 import io
-import math
 import multiprocessing
 import os
 import pkgutil
@@ -60,12 +59,6 @@ def value_of(claims: dict[str, EvaluatedClaim], ident: str) -> float:
     if value is None:
         raise ValueError(f"claim {ident} has no numeric value to draw with")
     return value
-
-
-def ellipse_points(semi_x: float, semi_y: float, n: int = 361) -> tuple[list[float], list[float]]:
-    """Points of the axis-aligned ellipse (x/a)^2 + (y/b)^2 = 1, for plotting."""
-    angles = [2 * math.pi * k / (n - 1) for k in range(n)]
-    return [semi_x * math.cos(a) for a in angles], [semi_y * math.sin(a) for a in angles]
 
 
 def figure(key: str, book_figure: str, caption: str, claims: tuple[str, ...]) -> Callable:

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 from matplotlib import colormaps
 
+from mechmodel.ellipse import ellipse_outline
 from mechmodel.geometry import (
     minkowski_slope,
     newton_slope,
@@ -16,7 +17,7 @@ from mechmodel.geometry import (
     whirling_rectangles,
 )
 from reference.tables import unit_factor
-from reports.figures import ellipse_points, figure, value_of
+from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -134,7 +135,7 @@ def _slope_plots(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 def _circle_segments(ax: Axes, sigma: float) -> None:
     """Fig. 1.4b: the six trigonometric segments of angle sigma on the unit circle."""
     seg = unit_circle_segments(sigma)
-    xs, ys = ellipse_points(1.0, 1.0)
+    xs, ys = ellipse_outline(1.0, 1.0)
     ax.plot(xs, ys, color="0.75")
     p = (seg.base, seg.altitude)
     drawn = (
@@ -176,7 +177,7 @@ def _whirl(ax: Axes, sigma: float, terms: int) -> None:
             lw=0.6,
         )
     ax.plot([c[0] for c in corners], [c[1] for c in corners], "-", color="k", lw=1.5)
-    quarter = [(x, y) for x, y in zip(*ellipse_points(1.0, 1.0), strict=True) if x >= 0 <= y]
+    quarter = [(x, y) for x, y in zip(*ellipse_outline(1.0, 1.0), strict=True) if x >= 0 <= y]
     ax.plot([q[0] for q in quarter], [q[1] for q in quarter], color="0.75", lw=0.8)
     names = [r"$\tan\sigma$", "1", r"$\cot\sigma$", r"$\cot^2\sigma$"]
     for k, name in enumerate(names):

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING
 
-from mechmodel.collisions import collide, kinetic_energy
-from reports.figures import ellipse_points, figure, value_of
+from mechmodel.collisions import collide
+from mechmodel.ellipse import ellipse_outline, ellipse_radii, kinetic_energy
+from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -37,8 +37,7 @@ def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         (kinetic_energy((m_suv, m_vw), (v_suv, v_vw)), "-", "KE ellipse"),
         (sticking.ke_after, "--", "IE ellipse"),
     ):
-        # 1/2 M x^2 + 1/2 m y^2 = E has semi-axes sqrt(2E/M) and sqrt(2E/m)
-        xs, ys = ellipse_points(math.sqrt(2 * energy / m_suv), math.sqrt(2 * energy / m_vw))
+        xs, ys = ellipse_outline(*ellipse_radii(m_suv, m_vw, energy))
         ax.plot(xs, ys, style, label=f"{label}, $E$ = {energy:g}")
     p = elastic.momentum
     line_x = [-20.0, 100.0]

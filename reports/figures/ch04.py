@@ -8,14 +8,14 @@ from typing import TYPE_CHECKING
 
 from mechmodel.bangs import (
     bang_history,
-    energy_ellipse,
     galileo_shifted_collision,
     x2_full_transfer_ratio,
     x2_infinite_ratio_launch,
     x2_launch,
 )
+from mechmodel.ellipse import ellipse_outline, energy_ellipse
 from mechmodel.operators import bang_facet_slope, bang_line_slope
-from reports.figures import ellipse_points, figure, value_of
+from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -50,7 +50,7 @@ def _ellipse(ax: Axes, claims: dict[str, EvaluatedClaim], label: str | None = No
         value_of(claims, "ch04.history.v1"),
         value_of(claims, "ch04.history.v2"),
     )
-    ax.plot(*ellipse_points(e.radius_v1, e.radius_v2), color="0.75", label=label)
+    ax.plot(*ellipse_outline(*e.radii), color="0.75", label=label)
 
 
 def _vv_axes(ax: Axes, lim: float = 3.2) -> None:
@@ -268,7 +268,7 @@ def _ellipse_fill(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     for k, (ax, bangs) in enumerate(zip(panels, FIG_4_9_BANGS, strict=True)):
         h = _history(claims, bangs)
         states = [h.start[2:], *((b.v1, b.v2) for b in h.bangs)]
-        ax.plot(*ellipse_points(e.radius_v1, e.radius_v2), color="0.7")
+        ax.plot(*ellipse_outline(*e.radii), color="0.7")
         width = 0.8 if bangs < 50 else 0.3
         ax.plot([s[0] for s in states], [s[1] for s in states], "-", lw=width, color="C0")
         _vv_axes(ax, lim=3.2)

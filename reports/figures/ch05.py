@@ -6,7 +6,7 @@ import math
 from typing import TYPE_CHECKING
 
 from mechmodel.bangs import bang_history, ceiling_sequence, floor_bounce
-from mechmodel.collisions import kinetic_energy
+from mechmodel.ellipse import ellipse_outline, energy_ellipse, kinetic_energy, velocity_radius
 from mechmodel.operators import (
     bang_angle,
     integral_right_triangle,
@@ -20,7 +20,7 @@ from mechmodel.operators import (
     sigma,
 )
 from mechmodel.planar import apply, matrix_product
-from reports.figures import ellipse_points, figure, value_of
+from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -55,8 +55,7 @@ def _bang_sequence(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     fig.set_size_inches(8.0, 4.8)
     fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    energy = kinetic_energy((m1, m2), (v1, v2))
-    xs, ys = ellipse_points(math.sqrt(2 * energy / m1), math.sqrt(2 * energy / m2))
+    xs, ys = ellipse_outline(*energy_ellipse(m1, m2, v1, v2).radii)
     ax.plot(xs, ys, color="0.7", label="energy ellipse")
     points = sequence.velocities
     ax.plot(
@@ -180,8 +179,8 @@ def _clock(ax: Axes, m1: float, m2: float, start: tuple[float, float], n: int) -
     """Fig. 5.2(b): the states of ``ceiling_sequence`` as hands of the V-space clock."""
     scale = mass_scaling(m1, m2)
     states = [apply(scale, v) for v in ceiling_sequence(m1, m2, *start).velocities]
-    radius = math.hypot(*states[0])
-    ax.plot(*ellipse_points(radius, radius), color="0.75")
+    radius = velocity_radius(1, kinetic_energy((m1, m2), start))  # V = sqrt(m) v: a circle (5.6)
+    ax.plot(*ellipse_outline(radius, radius), color="0.75")
     ax.plot([s[0] for s in states], [s[1] for s in states], "-", color="0.55", lw=0.7)
     mirror = mirror_angle(scaled_collision_matrix(m1, m2))
     c, s = radius * math.cos(mirror), radius * math.sin(mirror)

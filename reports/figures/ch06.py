@@ -12,6 +12,7 @@ from mechmodel.forces import (
     isothermal_potential,
     trapped_ball,
 )
+from mechmodel.oscillators import orbit_period, oscillator_frequency
 from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
@@ -96,8 +97,8 @@ def _two_gas_oscillator(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     k = -(_two_gas_force(big_m, m, v0, y0, step) - _two_gas_force(big_m, m, v0, y0, -step)) / (
         2 * step
     )
-    omega = math.sqrt(k / big_m)
-    period = 2 * math.pi / omega
+    omega = oscillator_frequency(k, big_m)
+    period = orbit_period(omega)
     times = [3 * period * j / 400 for j in range(401)]
     run = solve_ivp(
         lambda _t, s: [s[1], _two_gas_force(big_m, m, v0, y0, s[0]) / big_m],

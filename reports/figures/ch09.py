@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from mechmodel.ellipse import ellipse_outline
 from mechmodel.fields import (
     chord_tunnel_position,
     clock_angle,
@@ -16,7 +17,7 @@ from mechmodel.fields import (
     parabola_geometry,
     tunnel_period,
 )
-from reports.figures import ellipse_points, figure, value_of
+from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -42,7 +43,7 @@ def _tunnel(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     fig.set_size_inches(7.0, 6.4)
     fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    xs, ys = ellipse_points(1.0, 1.0)
+    xs, ys = ellipse_outline(1.0, 1.0)
     ax.plot(xs, ys, color="0.6", label="Earth's surface (= the orbit)")
     ax.plot([-1, 1], [0, 0], color="0.3", label="tunnel through the centre")
     offset = radius / 2  # a chord half a radius off the centre, tilted to run below the diameter

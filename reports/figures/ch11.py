@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+from mechmodel.ellipse import ellipse_outline
 from mechmodel.oscillators import (
     apsis_speeds,
     dual_ellipse,
@@ -20,7 +21,7 @@ from mechmodel.rotation import (
     rod_impulse,
     rod_point_position,
 )
-from reports.figures import ellipse_points, figure, value_of
+from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -65,7 +66,7 @@ def _orbit(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     fig.set_size_inches(9.6, 3.4)
     fig.set_layout_engine("constrained")
     left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
-    xs, ys = ellipse_points(a, b)
+    xs, ys = ellipse_outline(a, b)
     for ax in (left, right):
         ax.plot(xs, ys, color="0.6")
         ax.set_aspect("equal")
@@ -139,9 +140,9 @@ def _triads(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     dual = dual_ellipse(a, b)
     fig.set_size_inches(6.0, 5.0)
     ax = fig.add_subplot()
-    xs, ys = ellipse_points(a, b)
+    xs, ys = ellipse_outline(a, b)
     ax.plot(xs, ys, color="C0", label=r"$Q$-ellipse $\mathbf{r}\cdot Q\cdot\mathbf{r} = 1$")
-    xs, ys = ellipse_points(dual.radius_x, dual.radius_y)
+    xs, ys = ellipse_outline(dual.radius_x, dual.radius_y)
     ax.plot(
         xs, ys, "--", color="C1", label=r"dual ellipse $\mathbf{p}\cdot Q^{-1}\cdot\mathbf{p} = 1$"
     )

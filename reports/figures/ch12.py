@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from mechmodel.ellipse import ellipse_outline, velocity_radius
 from mechmodel.lagrange import (
     contact_point,
     energy_ellipse_radii,
@@ -19,7 +20,7 @@ from mechmodel.lagrange import (
     projectile_family,
     trajectory_height,
 )
-from reports.figures import ellipse_points, figure, value_of
+from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -66,7 +67,7 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         (
             "$E(V)$: quasi-velocities",
             (r"$V_1 = √m_1\,v_1$ (scaled)", r"$V_2 = √m_2\,v_2$ (scaled)"),
-            [math.sqrt(2 * energy)] * 2,
+            [velocity_radius(1, energy)] * 2,  # E(V) = V.V/2: the unit-mass circle (12.5)
             (math.sqrt(m1), math.sqrt(m2)),
             s.quasi_collision,
             s.quasi_bisector,
@@ -84,10 +85,10 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     fig.set_layout_engine("constrained", w_pad=0.1)
     for k, (title, (xlabel, ylabel), (a, b), scale, collision, bisector) in enumerate(planes):
         ax = fig.add_subplot(1, 3, k + 1)
-        x, y = ellipse_points(a, b)
+        x, y = ellipse_outline(a, b)
         ax.plot(x, y, color="C0")
         # COM point: both bodies at the velocity u with KE = 1: (m1 + m2) u^2 / 2 = 1
-        u = math.sqrt(2 * energy / (m1 + m2))
+        u = velocity_radius(m1 + m2, energy)
         cx, cy = scale[0] * u, scale[1] * u
         span = 1.3 * max(a, b)
         t = np.linspace(-span, span, 3)
