@@ -27,6 +27,8 @@ from mechmodel import inputs
 from mechmodel.ellipse import EnergyEllipse, kinetic_energy
 from mechmodel.ellipse import ellipse_radii as ellipse_radii  # the catalog's collisions.*
 from mechmodel.ellipse import energy_ellipse as energy_ellipse
+from mechmodel.numeric import line_angle as line_angle
+from mechmodel.numeric import line_slope as line_slope
 
 
 @dataclass(frozen=True)
@@ -277,10 +279,6 @@ def elastic_com_velocity(v_in: Any, v_fin: Any) -> Any:
 # -- lines, angles and the energy ellipse's form (Fig. 3.1, (3.6)-(3.7)) ----------------------
 
 
-def _is_mp(x: Any) -> bool:
-    return type(x).__module__.startswith("mpmath")
-
-
 def _sqrt(x: Any) -> Any:
     """Square root of x >= 0: exact for a Fraction or int that is a perfect square."""
     if isinstance(x, int | Fraction) and not isinstance(x, bool):
@@ -294,29 +292,6 @@ def _sqrt(x: Any) -> Any:
     if x < 0:
         raise ValueError(f"square root of a negative number {x!r}")
     return x**0.5
-
-
-def line_angle(slope: Any) -> Any:
-    """Angle (radians) of a line of slope ``slope`` from the horizontal axis, atan(slope).
-
-    The equal-velocity line V2 = V1 (slope 1) is the book's 45° line (Fig. 2.1).
-    """
-    inputs.real(slope, "slope")
-    if _is_mp(slope):
-        import mpmath
-
-        return mpmath.atan(slope)
-    return math.atan(slope)
-
-
-def line_slope(angle: Any) -> Any:
-    """Slope tan(angle) of a line at ``angle`` radians from the horizontal axis."""
-    inputs.real(angle, "angle")
-    if _is_mp(angle):
-        import mpmath
-
-        return mpmath.tan(angle)
-    return math.tan(angle)
 
 
 def energy_ellipse_form(m1: Any, m2: Any, energy: Any, v1: Any, v2: Any) -> Any:
@@ -457,7 +432,7 @@ def _check_matrix(inertia: Sequence[Sequence[Any]], n: int) -> None:
             inputs.real(x, f"inertia[{j}][{k}]")
 
 
-def quadratic_form(u: Sequence[Any], inertia: Sequence[Sequence[Any]], v: Sequence[Any]) -> Any:
+def tensor_form(u: Sequence[Any], inertia: Sequence[Sequence[Any]], v: Sequence[Any]) -> Any:
     """The tensor form u . M . v = sum_jk u_j M_jk v_k of (3.11a)-(3.12b).
 
     V_COM . M . V_IN is V_COM P_Total (3.11a); V . M . V / 2 the kinetic energy (3.12c).
@@ -478,7 +453,7 @@ def ellipse_tensor_form(x: Any, y: Any, a: Any, b: Any) -> Any:
     inputs.positive(b, "b")
     zero = 0 * a
     tensor = ((1 / (a * a), zero), (zero, 1 / (b * b)))
-    return quadratic_form((x, y), tensor, (x, y))
+    return tensor_form((x, y), tensor, (x, y))
 
 
 @dataclass(frozen=True)
@@ -497,7 +472,7 @@ class TensorForms:
     v_com: tuple[Any, ...]
 
     def _form(self, u: Sequence[Any], v: Sequence[Any]) -> Any:
-        return quadratic_form(u, self.inertia, v)
+        return tensor_form(u, self.inertia, v)
 
     @property
     def com_momentum(self) -> Any:

@@ -25,7 +25,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from mechmodel import inputs
-from mechmodel.forces import polynomial_derivative, polynomial_integral, slope
+from mechmodel.forces import polynomial_derivative, polynomial_integral
+from mechmodel.numeric import complex_step_derivative
 
 # --- the dent: Fig. 7.1, (7.1)-(7.4) ---------------------------------------------------------
 
@@ -47,7 +48,7 @@ def flat_area_slope(radius: Any, depth: Any) -> float:
     r^2 ~ 2 R x (7.1a), and of the sagitta x ~ r^2 / 2R (7.1b)."""
     inputs.positive(radius, "radius")
     inputs.real(depth, "depth")
-    return slope(lambda x: x * (radius + radius - x), depth)
+    return complex_step_derivative(lambda x: x * (radius + radius - x), depth)
 
 
 def flat_radius_shallow(radius: Any, depth: Any) -> float:
@@ -103,7 +104,7 @@ def balloon_stiffness(pressure: Any, radius: Any, depth: Any) -> float:
     inputs.positive(pressure, "pressure")
     inputs.positive(radius, "radius")
     inputs.real(depth, "depth")
-    return slope(lambda x: pressure * math.pi * x * (radius + radius - x), depth)
+    return complex_step_derivative(lambda x: pressure * math.pi * x * (radius + radius - x), depth)
 
 
 def balloon_force_shallow(pressure: Any, radius: Any, depth: Any) -> float:
@@ -188,7 +189,7 @@ def whole_ball_volume(radius: Any) -> float:
 
 def _local_power(f: Any, x: float) -> float:
     """d ln f / d ln x by the complex step (f analytic and positive at x)."""
-    return x * slope(f, x) / float(f(x))
+    return x * complex_step_derivative(f, x) / float(f(x))
 
 
 # --- stopping the daredevil: Figs. 7.3-7.4, (7.7)-(7.8) ---------------------------------------

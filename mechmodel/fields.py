@@ -32,7 +32,8 @@ from typing import Any
 from scipy import optimize
 
 from mechmodel import inputs
-from mechmodel.forces import slope as _slope
+from mechmodel.numeric import clock_angle as clock_angle  # the catalog's fields.*
+from mechmodel.numeric import complex_step_derivative, line_angle
 
 # --- power laws and the constructions of Figs. 9.1-9.2 --------------------------------------
 
@@ -118,12 +119,6 @@ def normal_slope(slope: Any) -> Any:
     if slope == 0:
         raise ValueError("a horizontal line has a vertical normal: no slope")
     return -1 / slope
-
-
-def line_angle(slope: Any) -> float:
-    """Angle of a line of slope ``slope`` above the x-axis, radians (the 45-degree line y = x)."""
-    inputs.real(slope, "slope")
-    return math.atan(slope)
 
 
 def angle_between_lines(slope1: Any, slope2: Any) -> float:
@@ -263,7 +258,7 @@ def parabola_slope_for_focus(p: Any, x: Any) -> float:
     step on its height (``parabola_height_for_focus``): the x/lambda = x/(2p) of Fig. 9.4."""
     inputs.positive(p, "p")
     inputs.real(x, "x")
-    return _slope(lambda u: parabola_height_for_focus(p, u), x)
+    return complex_step_derivative(lambda u: parabola_height_for_focus(p, u), x)
 
 
 @dataclass(frozen=True)
@@ -907,13 +902,6 @@ def oscillator_initial_phase(x0: Any, amplitude: Any) -> float:
     if abs(x0) > amplitude:
         raise ValueError("the start lies outside the swing: |x0| <= amplitude")
     return math.asin(x0 / amplitude)
-
-
-def clock_angle(hours: Any, clock_hours: Any) -> float:
-    """Phase angle, radians, of ``hours`` on a clock of ``clock_hours`` hours (Fig. 9.10)."""
-    inputs.real(hours, "hours")
-    inputs.positive(clock_hours, "clock_hours")
-    return 2 * math.pi * hours / clock_hours
 
 
 def clock_hour(hour: Any, lead: Any, clock_hours: Any) -> Any:

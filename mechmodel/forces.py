@@ -28,29 +28,9 @@ from typing import Any
 
 from mechmodel import inputs
 from mechmodel.collisions import collide
+from mechmodel.numeric import complex_step_derivative, log_slope
 
-_COMPLEX_STEP = 1e-30  # far below rounding: the complex-step slope is exact to rounding
-_LOG_STEP = 1e-4  # step in ln x of the central-difference log-slope
 _CHEBYSHEV_NODES = 64  # Gauss-Chebyshev nodes of the period integral (exact for the harmonic well)
-
-
-def slope(f: Callable[[Any], Any], x: Any) -> float:
-    """df/dx at ``x`` by the complex step, Im f(x + i h) / h.
-
-    ``f`` must be analytic near the real axis and written with plain operators (or ``cmath``),
-    so that it accepts a complex argument; the result is exact to rounding.
-    """
-    return f(float(x) + 1j * _COMPLEX_STEP).imag / _COMPLEX_STEP
-
-
-def log_slope(f: Callable[[float], Any], x: Any) -> float:
-    """Local power d ln|f| / d ln x at ``x > 0``: exactly n (to rounding) for f = c x^n.
-
-    A central difference in ln x, so ``f`` may itself be computed numerically (a slope).
-    """
-    x = float(x)
-    up, down = abs(float(f(x * math.exp(_LOG_STEP)))), abs(float(f(x * math.exp(-_LOG_STEP))))
-    return (math.log(up) - math.log(down)) / (2 * _LOG_STEP)
 
 
 def _ln(x: Any) -> Any:
@@ -247,7 +227,7 @@ def isothermal_potential_force(m2: Any, speed: Any, gap: Any) -> ForceLaw:
     inputs.positive(gap, "gap")
 
     def force(y: Any, v: Any) -> float:
-        return -slope(lambda g: -m2 * v * v * _ln(g), y)
+        return -complex_step_derivative(lambda g: -m2 * v * v * _ln(g), y)
 
     return _law(force, gap, speed, m2 * speed * speed / 2)
 
@@ -300,7 +280,7 @@ def adiabatic_potential_force(m2: Any, v0: Any, y0: Any, gap: Any) -> ForceLaw:
     speed = adiabatic_speed(v0, y0, gap)
 
     def force(y: Any, v: Any) -> float:
-        return -slope(lambda g: _adiabatic_potential(m2, v, y0, g), y)
+        return -complex_step_derivative(lambda g: _adiabatic_potential(m2, v, y0, g), y)
 
     return _law(force, gap, v0, m2 * speed * speed / 2)
 
@@ -313,7 +293,7 @@ def kinetic_energy_factor(m2: Any, v0: Any, y0: Any, gap: Any) -> float:
     """
     inputs.mass(m2, "m2")
     adiabatic_speed(v0, y0, gap)
-    bare = -slope(lambda g: m2 * (v0 * y0 / g) * (v0 * y0 / g), gap)
+    bare = -complex_step_derivative(lambda g: m2 * (v0 * y0 / g) * (v0 * y0 / g), gap)
     return _adiabatic(m2, v0, y0, gap) / bare
 
 
@@ -398,7 +378,7 @@ def opposed_spring_constant(force_constant: Any, gap: Any) -> float:
     inputs.positive(force_constant, "force_constant")
     inputs.positive(gap, "gap")
     f = force_constant
-    return -slope(lambda x: f / (gap + x) - f / (gap - x), 0)
+    return -complex_step_derivative(lambda x: f / (gap + x) - f / (gap - x), 0)
 
 
 def isothermal_spring_constant(m2: Any, speed: Any, gap: Any) -> float:
@@ -487,7 +467,7 @@ def power_law_potential(strength: Any, power: Any, y: Any) -> PowerLawPotential:
         potential=_power_potential(strength, power, y),
         exponent=exponent,
         exponent_gain=exponent - power,
-        force=-slope(lambda x: _power_potential(strength, power, x), y),
+        force=-complex_step_derivative(lambda x: _power_potential(strength, power, x), y),
         logarithmic=power == -1,
     )
 

@@ -25,7 +25,9 @@ from typing import Any
 import mpmath
 
 from mechmodel import inputs
-from mechmodel.planar import hypotenuse as hypotenuse  # the catalog names geometry.hypotenuse
+from mechmodel.numeric import clock_angle as clock_angle  # the catalog's geometry.*
+from mechmodel.numeric import line_angle
+from mechmodel.planar import hypotenuse as hypotenuse
 
 ARC_FUNCTIONS = ("sin", "cos", "tan")
 
@@ -117,11 +119,9 @@ def speed(speed: Any) -> Any:
     return inputs.real(speed, "speed")
 
 
-def slope_angle(slope: Any) -> Any:
-    """Slope angle σ = arctan(slope) of a line of slope Δy/Δx, in radians (line 934: the 1/1
-    slope is the 45 degree diagonal)."""
-    inputs.real(slope, "slope")
-    return _lib(slope).atan(slope)
+# The slope angle sigma = arctan(slope) of a line of slope dy/dx (line 934: the 1/1 slope is the
+# 45 degree diagonal) is the angle of its line.
+slope_angle = line_angle
 
 
 # -- angles (Fig. 1.3, exercises 1 and 3) ---------------------------------------------------
@@ -150,14 +150,6 @@ def regular_polygon_interior_angle(sides: Any) -> Any:
     triangle of the Euclid construction of a 60 degree slope (line 1431, Fig. 1.6)."""
     n = inputs.count(sides, "sides", minimum=3)
     return (n - 2) * math.pi / n
-
-
-def clock_angle(hours: Any, hours_per_turn: Any) -> Any:
-    """Angle swept by ``hours`` on a clock face of ``hours_per_turn`` equal hours: 2π h / N
-    (exercise 3, lines 1859-1861: 3 hours of a 12-point clock is 90 degrees)."""
-    inputs.real(hours, "hours")
-    n = inputs.count(hours_per_turn, "hours_per_turn", minimum=1)
-    return 2 * _pi(hours) * hours / n
 
 
 def doubled_clock_points(points: Any) -> int:

@@ -37,7 +37,6 @@ from __future__ import annotations
 
 import cmath
 import math
-import operator
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
@@ -132,7 +131,7 @@ class Laurent:
         return self * Laurent.of(other).monomial_inverse()
 
     def __pow__(self, n: int) -> Laurent:
-        n = operator_index(n)
+        n = inputs.integer(n, "exponent")
         base = self if n >= 0 else self.monomial_inverse()
         out = Laurent.constant(1)
         for _ in range(abs(n)):
@@ -246,14 +245,6 @@ class Laurent:
             rest = Laurent({_monomial(powers): c}) * Laurent.var(sin, e % 2)
             out = out + rest * one_minus_cos2 ** (e // 2)
         return out
-
-
-def operator_index(n: Any) -> int:
-    """``n`` as an int (any integer type, either sign), else ``ValueError``."""
-    try:
-        return operator.index(n)
-    except TypeError as err:
-        raise ValueError(f"an exponent must be an integer, got {n!r}") from err
 
 
 def angle_derivative(p: Laurent, cos: str, sin: str) -> Laurent:

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import cmath
 import math
-import operator
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
@@ -336,18 +335,10 @@ def binomial(n: Any, k: Any) -> int:
     """Binomial coefficient B(n, k) = n!/(k!(n-k)!) from factorials (the formula after (9));
     0 outside 0 <= k <= n."""
     n = inputs.count(n, "n")
-    k = operator_index(k, "k")
+    k = inputs.integer(k, "k")
     if not 0 <= k <= n:
         return 0
     return factorial(n) // (factorial(k) * factorial(n - k))
-
-
-def operator_index(value: Any, name: str) -> int:
-    """``value`` as an int (any sign), else ``ValueError``."""
-    try:
-        return operator.index(value)
-    except TypeError as err:
-        raise ValueError(f"{name} must be an integer, got {value!r}") from err
 
 
 def binomial_pq(p: Any, q: Any) -> int:
@@ -472,7 +463,7 @@ def binomial_term_count(factors: Any) -> int:
 
 def integer_power(base: Any, exponent: Any) -> int:
     """base^exponent for integers, by repeated multiplication ((9): 2^2 = 4, ...)."""
-    base = operator_index(base, "base")
+    base = inputs.integer(base, "base")
     exponent = inputs.count(exponent, "exponent")
     value = 1
     for _ in range(exponent):
@@ -504,7 +495,7 @@ def gaussian_exponent_coefficient(n: Any) -> Fraction:
 def binomial_gaussian(n: Any, deviation: Any) -> dict[str, Any]:
     """Binomial ratio B(n, n/2 + x)/B(n, n/2) and its Gauss approximation e^(-2 x^2/n)."""
     n = inputs.count(n, "n", minimum=1)
-    x = operator_index(deviation, "deviation")
+    x = inputs.integer(deviation, "deviation")
     centre = n // 2
     ratio = Fraction(binomial(n, centre + x), binomial(n, centre))
     return {"binomial": ratio, "gauss": math.exp(-float(gaussian_exponent_coefficient(n)) * x**2)}
