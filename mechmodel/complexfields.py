@@ -9,7 +9,7 @@ Everything here is dimensionless (the book's scaled units).
 Three kinds of computation:
 
 - **Exact algebra** for the derived coefficients: polynomials in x, y (or in z, z*) with
-  Gaussian-rational coefficients (``Fraction`` real and imaginary parts). The z- and
+  Gaussian-rational coefficients (``mechmodel.algebra.Laurent``). The z- and
   z*-derivatives (10.31) come from inverting the linear map z = x + i y, z* = x - i y, so their
   factors 1/2 are computed, never written in. Results are exact ``Fraction`` or ``int``.
 - **Numerical contour integration** (trapezoid rule on a circle, mpmath at 30 digits) for loop
@@ -34,203 +34,34 @@ import mpmath
 import numpy as np
 
 from mechmodel import inputs
+from mechmodel.algebra import I_UNIT, Gaussian, Laurent
 
 # -------------------------------------------------------------------------------------------
-# Exact Gaussian rationals and polynomials
+# Polynomials in x, y and in z, z* (the exact algebra is mechmodel.algebra)
 # -------------------------------------------------------------------------------------------
 
-
-@dataclass(frozen=True, slots=True)
-class Gaussian:
-    """An exact complex number ``re + i im`` with rational parts."""
-
-    re: Fraction | int = 0
-    im: Fraction | int = 0
-
-    @staticmethod
-    def of(value: Any) -> Gaussian:
-        """``value`` (an int, Fraction, Gaussian or complex) as exact. Integer parts stay
-        ``int`` (faster; they mix exactly with Fraction), floats become their exact Fraction."""
-        if isinstance(value, Gaussian):
-            return value
-        if isinstance(value, complex):
-            return Gaussian(Fraction(value.real), Fraction(value.imag))
-        if isinstance(value, bool) or not isinstance(value, int | Fraction):
-            return Gaussian(Fraction(value), 0)
-        return Gaussian(value, 0)
-
-    def __add__(self, other: Any) -> Gaussian:
-        o = other if isinstance(other, Gaussian) else Gaussian.of(other)
-        return Gaussian(self.re + o.re, self.im + o.im)
-
-    __radd__ = __add__
-
-    def __neg__(self) -> Gaussian:
-        return Gaussian(-self.re, -self.im)
-
-    def __sub__(self, other: Any) -> Gaussian:
-        return self + (-Gaussian.of(other))
-
-    def __mul__(self, other: Any) -> Gaussian:
-        o = other if isinstance(other, Gaussian) else Gaussian.of(other)
-        return Gaussian(self.re * o.re - self.im * o.im, self.re * o.im + self.im * o.re)
-
-    __rmul__ = __mul__
-
-    def __truediv__(self, other: Any) -> Gaussian:
-        o = Gaussian.of(other)
-        norm = Fraction(o.re * o.re + o.im * o.im)
-        if norm == 0:
-            raise ZeroDivisionError("division by the Gaussian zero")
-        return self * Gaussian(o.re / norm, -o.im / norm)
-
-    def conjugate(self) -> Gaussian:
-        return Gaussian(self.re, -self.im)
-
-    def is_zero(self) -> bool:
-        return self.re == 0 and self.im == 0
-
-    def __complex__(self) -> complex:
-        return complex(float(self.re), float(self.im))
-
-
-I_UNIT = Gaussian(0, 1)
-Monomial = tuple[int, int]
-
-
-class Poly:
-    """A polynomial in two real (or formal) variables with Gaussian-rational coefficients.
-
-    ``terms`` maps exponent pairs to coefficients: (i, j) is x^i y^j for a polynomial in x, y,
-    or z^i z*^j for one in z, z* (which one is the caller's business). Zero terms are dropped.
-    """
-
-    def __init__(self, terms: dict[Monomial, Any] | None = None) -> None:
-        self.terms: dict[Monomial, Gaussian] = {}
-        for key, value in (terms or {}).items():
-            g = Gaussian.of(value)
-            if not g.is_zero():
-                self.terms[key] = g
-
-    @staticmethod
-    def constant(value: Any) -> Poly:
-        return Poly({(0, 0): value})
-
-    @staticmethod
-    def first() -> Poly:
-        """The first variable (x, or z)."""
-        return Poly({(1, 0): 1})
-
-    @staticmethod
-    def second() -> Poly:
-        """The second variable (y, or z*)."""
-        return Poly({(0, 1): 1})
-
-    def __add__(self, other: Any) -> Poly:
-        o = other if isinstance(other, Poly) else Poly.constant(other)
-        out = dict(self.terms)
-        for key, value in o.terms.items():
-            out[key] = out.get(key, Gaussian()) + value
-        return Poly(out)
-
-    __radd__ = __add__
-
-    def __neg__(self) -> Poly:
-        return Poly({k: -v for k, v in self.terms.items()})
-
-    def __sub__(self, other: Any) -> Poly:
-        o = other if isinstance(other, Poly) else Poly.constant(other)
-        return self + (-o)
-
-    def __mul__(self, other: Any) -> Poly:
-        if not isinstance(other, Poly):
-            g = Gaussian.of(other)
-            return Poly({k: v * g for k, v in self.terms.items()})
-        out: dict[Monomial, Gaussian] = {}
-        for (a, b), u in self.terms.items():
-            for (c, d), v in other.terms.items():
-                key = (a + c, b + d)
-                out[key] = out.get(key, Gaussian()) + u * v
-        return Poly(out)
-
-    __rmul__ = __mul__
-
-    def __pow__(self, n: int) -> Poly:
-        out = Poly.constant(1)
-        for _ in range(inputs.count(n, "exponent")):
-            out = out * self
-        return out
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, Poly) and self.terms == other.terms
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def d_first(self) -> Poly:
-        """Partial derivative in the first variable."""
-        return Poly({(a - 1, b): v * a for (a, b), v in self.terms.items() if a})
-
-    def d_second(self) -> Poly:
-        """Partial derivative in the second variable."""
-        return Poly({(a, b - 1): v * b for (a, b), v in self.terms.items() if b})
-
-    def conjugate_coefficients(self) -> Poly:
-        """Conjugate every coefficient (the conjugate function of real x, y)."""
-        return Poly({k: v.conjugate() for k, v in self.terms.items()})
-
-    def real_part(self) -> Poly:
-        """Real part of the function of real x, y: the real parts of the coefficients."""
-        return Poly({k: v.re for k, v in self.terms.items()})
-
-    def imag_part(self) -> Poly:
-        """Imaginary part of the function of real x, y."""
-        return Poly({k: v.im for k, v in self.terms.items()})
-
-    def is_zero(self) -> bool:
-        return not self.terms
-
-    def at(self, first: Any, second: Any) -> Gaussian:
-        """The value at exact (Gaussian or rational) arguments."""
-        total = Gaussian()
-        u, v = Gaussian.of(first), Gaussian.of(second)
-        for (a, b), c in self.terms.items():
-            term = c
-            for _ in range(a):
-                term = term * u
-            for _ in range(b):
-                term = term * v
-            total = total + term
-        return total
-
-    def at_complex(self, first: complex, second: complex) -> complex:
-        """The value at float arguments (for plotting and property tests)."""
-        return sum(
-            (complex(c) * first**a * second**b for (a, b), c in self.terms.items()),
-            start=0j,
-        )
-
-
-X = Poly.first()
-Y = Poly.second()
+ZSTAR = "s"  # the variable z* of a polynomial in z, z* (printed "s" in its view: "z1s2")
+X = Laurent.var("x")
+Y = Laurent.var("y")
 Z_OF_XY = X + Y * I_UNIT  # z = x + i y
 ZSTAR_OF_XY = X - Y * I_UNIT  # z* = x - i y
 
 
 @cache
-def _z_zstar_power(a: int, b: int) -> Poly:
+def _z_zstar_power(a: int, b: int) -> Laurent:
     """z^a z*^b in x, y (cached: the same powers come back often)."""
     return (Z_OF_XY**a) * (ZSTAR_OF_XY**b)
 
 
-def zpoly_to_xy(p: Poly) -> Poly:
+def zpoly_to_xy(p: Laurent) -> Laurent:
     """A polynomial in z, z* rewritten as a polynomial in x, y (z = x + i y, z* = x - i y)."""
-    out = Poly()
-    for (a, b), c in p.terms.items():
+    out = Laurent()
+    for (a, b), c in p.powers("z", ZSTAR).items():
         out = out + _z_zstar_power(a, b) * c
     return out
 
 
-def _name(key: Monomial, first: str, second: str) -> str:
+def _name(key: tuple[int, ...], first: str, second: str) -> str:
     return f"{first}{key[0]}{second}{key[1]}"
 
 
@@ -253,11 +84,13 @@ class PolyView:
     size: Fraction
 
 
-def poly_view(p: Poly, first: str = "x", second: str = "y") -> PolyView:
-    """The printed form of a polynomial with real coefficients (``ValueError`` if not real)."""
-    if any(c.im != 0 for c in p.terms.values()):
+def poly_view(p: Laurent, first: str = "x", second: str = "y") -> PolyView:
+    """The printed form of a polynomial in the variables ``first``, ``second`` with real
+    coefficients (``ValueError`` if not real)."""
+    terms = p.powers(first, second)
+    if any(isinstance(c, Gaussian) for c in terms.values()):
         raise ValueError("poly_view needs real coefficients: take real_part or imag_part first")
-    coeffs = {key: c.re for key, c in sorted(p.terms.items())}
+    coeffs = dict(sorted(terms.items()))
     denominator = math.lcm(*(c.denominator for c in coeffs.values())) if coeffs else 1
     by_first: dict[int, list[int]] = {}
     by_second: dict[int, list[int]] = {}
@@ -284,7 +117,7 @@ class ComplexPolyView:
     denominator: int
 
 
-def complex_view(p: Poly, first: str = "x", second: str = "y") -> ComplexPolyView:
+def complex_view(p: Laurent, first: str = "x", second: str = "y") -> ComplexPolyView:
     real, imag = poly_view(p.real_part(), first, second), poly_view(p.imag_part(), first, second)
     return ComplexPolyView(real, imag, math.lcm(real.denominator, imag.denominator))
 
@@ -311,7 +144,8 @@ class CoordinateInverse:
     y_coefficient_times_i: Fraction
 
 
-def _real(g: Gaussian, what: str) -> Fraction:
+def _real(value: Fraction | Gaussian, what: str) -> Fraction:
+    g = Gaussian.of(value)
     if g.im != 0:
         raise ArithmeticError(f"{what} should be real, got {g}")
     return g.re
@@ -337,44 +171,44 @@ def inverse_coordinates() -> CoordinateInverse:
     )
 
 
-def d_dz(p: Poly) -> Poly:
+def d_dz(p: Laurent) -> Laurent:
     """z-derivative of a polynomial in x, y, holding z* fixed (10.31)."""
     inv = inverse_coordinates()
-    return p.d_first() * inv.dx_dz + p.d_second() * inv.dy_dz
+    return p.diff("x") * inv.dx_dz + p.diff("y") * inv.dy_dz
 
 
-def d_dzstar(p: Poly) -> Poly:
+def d_dzstar(p: Laurent) -> Laurent:
     """z*-derivative of a polynomial in x, y, holding z fixed (10.31)."""
     inv = inverse_coordinates()
-    return p.d_first() * inv.dx_dzstar + p.d_second() * inv.dy_dzstar
+    return p.diff("x") * inv.dx_dzstar + p.diff("y") * inv.dy_dzstar
 
 
-def divergence(fx: Poly, fy: Poly) -> Poly:
+def divergence(fx: Laurent, fy: Laurent) -> Laurent:
     """2D divergence dFx/dx + dFy/dy of F = (Fx, Fy)."""
-    return fx.d_first() + fy.d_second()
+    return fx.diff("x") + fy.diff("y")
 
 
-def curl_z(fx: Poly, fy: Poly) -> Poly:
+def curl_z(fx: Laurent, fy: Laurent) -> Laurent:
     """z-component of the curl, dFy/dx - dFx/dy, of F = (Fx, Fy)."""
-    return fy.d_first() - fx.d_second()
+    return fy.diff("x") - fx.diff("y")
 
 
-def gradient(phi: Poly) -> tuple[Poly, Poly]:
+def gradient(phi: Laurent) -> tuple[Laurent, Laurent]:
     """Gradient (dPhi/dx, dPhi/dy) of a scalar potential."""
-    return phi.d_first(), phi.d_second()
+    return phi.diff("x"), phi.diff("y")
 
 
-def curl_of_z_vector(a: Poly) -> tuple[Poly, Poly]:
+def curl_of_z_vector(a: Laurent) -> tuple[Laurent, Laurent]:
     """Curl of A e_z: (dA/dy, -dA/dx) (10.34)."""
-    return a.d_second(), -a.d_first()
+    return a.diff("y"), -a.diff("x")
 
 
-def _ratio(num: Poly, den: Poly) -> Gaussian:
+def _ratio(num: Laurent, den: Laurent) -> Fraction | Gaussian:
     """num / den for polynomials known to be proportional (``ArithmeticError`` otherwise)."""
     if den.is_zero():
         raise ArithmeticError("division by the zero polynomial")
     key, value = next(iter(den.terms.items()))
-    ratio = num.terms.get(key, Gaussian()) / value
+    ratio = num.terms.get(key, Fraction(0)) / value
     if num != den * ratio:
         raise ArithmeticError("the polynomials are not proportional")
     return ratio
@@ -395,8 +229,9 @@ class LaminarField:
     curl_size: Fraction
 
 
-def _size(p: Poly) -> Fraction:
-    return max((max(abs(c.re), abs(c.im)) for c in p.terms.values()), default=Fraction(0))
+def _size(p: Laurent) -> Fraction:
+    parts = (Gaussian.of(c) for c in p.terms.values())
+    return max((max(abs(g.re), abs(g.im)) for g in parts), default=Fraction(0))
 
 
 def conjugate_linear_field(strength_re: Any = 1, strength_im: Any = 0) -> LaminarField:
@@ -429,14 +264,14 @@ class PotentialFieldCoefficients:
     curl: Fraction
 
 
-def _as_complex(vx: Poly, vy: Poly) -> Poly:
+def _as_complex(vx: Laurent, vy: Laurent) -> Laurent:
     return vx + vy * I_UNIT
 
 
 def potential_field_coefficients() -> PotentialFieldCoefficients:
     """The factors of grad Phi and curl A in dphi*/dz* (10.34), from probes Phi = x (A = 0)
     and A = y (Phi = 0)."""
-    zero = Poly()
+    zero = Laurent()
     c_grad = _ratio(d_dzstar(X - zero * I_UNIT), _as_complex(*gradient(X)))
     c_curl = _ratio(d_dzstar(zero - Y * I_UNIT), _as_complex(*curl_of_z_vector(Y)))
     return PotentialFieldCoefficients(
@@ -461,7 +296,7 @@ class SourceFactors:
 
 def source_field_factors() -> SourceFactors:
     """Both factors of (10.46)-(10.47) from probe fields; checked on a second, curling probe."""
-    zero = Poly()
+    zero = Laurent()
     k_source = _ratio(_as_complex(divergence(X, zero), curl_z(X, zero)), d_dz(X))
     probe_x, probe_y = -Y * X, X * X  # a field with divergence and curl both nonzero
     lhs = d_dz(probe_x + probe_y * I_UNIT) * k_source
@@ -565,7 +400,9 @@ class AnalyticPotential:
     curl_y: PolyView
 
 
-def _analytic_polys(field_power: Any, strength: Gaussian) -> tuple[Poly, Poly, Poly, Poly]:
+def _analytic_polys(
+    field_power: Any, strength: Gaussian
+) -> tuple[Laurent, Laurent, Laurent, Laurent]:
     """Phi, A, Fx, Fy of f = strength z^n, n >= 0."""
     n = inputs.count(field_power, "field_power")
     anti = power_antiderivative(n)
@@ -601,8 +438,8 @@ def complementary_potential_factor(factor: Any) -> FactorPair:
     big_phi, a, fx, fy = _analytic_polys(1, Gaussian.of(1))
     gx, gy = gradient(big_phi)
     cx, cy = curl_of_z_vector(a)
-    point = (1, 1)
-    j = (fx.at(*point) - gx.at(*point) * f) / cx.at(*point)
+    at = {"x": 1, "y": 1}  # the point (1, 1)
+    j = (fx.evaluate(at) - gx.evaluate(at) * f) / cx.evaluate(at)
     if gx * f + cx * j != fx or gy * f + cy * j != fy:
         raise ArithmeticError("no single j reproduces the field")
     jr = _real(j, "j")
@@ -924,14 +761,14 @@ def dipole_pair(position_divisor: Any) -> DipolePair:
     """Combine the two line-source fields exactly, as polynomials in z and the separation D."""
     d = Fraction(position_divisor)
     inputs.positive(d, "position_divisor")
-    z, sep = Poly.first(), Poly.second()  # variables z and D (the separation)
+    z, sep = Laurent.var("z"), Laurent.var("D")  # the variable z and the separation D
     plus, minus = z + sep * (1 / d), z - sep * (1 / d)
     numerator = minus - plus  # a/(z + D/d) - a/(z - D/d), a = 1
     denominator = plus * minus
-    c = _real(numerator.terms[(0, 1)], "numerator")
-    if set(numerator.terms) != {(0, 1)} or denominator.terms.get((2, 0)) != Gaussian.of(1):
+    c = _real(numerator.coefficient(D=1), "numerator")
+    if numerator != sep * c or denominator.coefficient(z=2) != 1:
         raise ArithmeticError("unexpected form of the dipole fraction")
-    k = -1 / _real(denominator.terms[(0, 2)], "D^2 term")
+    k = -1 / _real(denominator.coefficient(D=2), "D^2 term")
     # f / D = c / (z^2 - D^2/k) -> c / z^2 as D -> 0
     return DipolePair(c, k, c)
 
@@ -1177,14 +1014,14 @@ class NonAnalyticField:
 class _NonAnalyticPolys:
     """The polynomials behind ``NonAnalyticField`` (in x, y unless named ``_z``: in z, z*)."""
 
-    fstar: Poly
-    s_star: Poly
-    s_star_z: Poly
-    phi_z: Poly
-    big_phi: Poly
-    a: Poly
-    longitudinal: tuple[Poly, Poly]
-    transverse: tuple[Poly, Poly]
+    fstar: Laurent
+    s_star: Laurent
+    s_star_z: Laurent
+    phi_z: Laurent
+    big_phi: Laurent
+    a: Laurent
+    longitudinal: tuple[Laurent, Laurent]
+    transverse: tuple[Laurent, Laurent]
 
 
 def _conjugate_power_polys(strength_re: Any, strength_im: Any, power: Any) -> _NonAnalyticPolys:
@@ -1192,19 +1029,18 @@ def _conjugate_power_polys(strength_re: Any, strength_im: Any, power: Any) -> _N
     n = inputs.count(power, "power")
     k = Gaussian(Fraction(strength_re), Fraction(strength_im))
     factors = source_field_factors()
-    f_z = Poly({(0, n): k})  # in z, z*
-    fstar_z = Poly({(q, p): c.conjugate() for (p, q), c in f_z.terms.items()})
-    s_star_z = Poly({(p - 1, q): c * p for (p, q), c in fstar_z.terms.items() if p}) * (
+    f_z = Laurent.term(k, **{ZSTAR: n})  # in z, z*
+    # f* of real x, y: conjugate the coefficients and swap z and z*
+    conjugated = f_z.conjugate_coefficients().powers("z", ZSTAR)
+    fstar_z = Laurent.from_powers(("z", ZSTAR), {(q, p): c for (p, q), c in conjugated.items()})
+    s_star_z = fstar_z.diff("z") * (  # the formal z-derivative, z* held fixed
         factors.source
     )
     fstar = zpoly_to_xy(fstar_z)
     s_star = d_dz(fstar) * factors.source
     if s_star != zpoly_to_xy(s_star_z):
         raise ArithmeticError("the chain-rule and formal z-derivatives disagree")
-    phi_z = (
-        Poly({(p + 1, q): c / (p + 1) for (p, q), c in f_z.terms.items()})
-        * factors.potential_prefactor
-    )
+    phi_z = f_z.integrate("z") * factors.potential_prefactor
     phi = zpoly_to_xy(phi_z)
     big_phi, a = phi.real_part(), phi.imag_part()
     lx, ly = gradient(big_phi)
@@ -1221,11 +1057,11 @@ def conjugate_power_field(strength_re: Any, strength_im: Any, power: Any) -> Non
     (lx, ly), (tx, ty) = p.longitudinal, p.transverse
     return NonAnalyticField(
         source_star=complex_view(p.s_star),
-        source_star_z=complex_view(p.s_star_z, "z", "s"),
+        source_star_z=complex_view(p.s_star_z, "z", ZSTAR),
         rho=poly_view(p.s_star.real_part()),
         current=poly_view(-p.s_star.imag_part()),
-        potential_z=complex_view(p.phi_z, "z", "s"),
-        potential_z_powers={f"z{a}": b for (a, b) in p.phi_z.terms},
+        potential_z=complex_view(p.phi_z, "z", ZSTAR),
+        potential_z_powers={f"z{a}": b for (a, b) in p.phi_z.powers("z", ZSTAR)},
         phi=poly_view(p.big_phi),
         a=poly_view(p.a),
         longitudinal_x=poly_view(lx),
@@ -1579,10 +1415,10 @@ def conjugate_power_field_at(
     p = _conjugate_power_polys(strength_re, strength_im, power)
     u, v = Fraction(x), Fraction(y)
 
-    def at(poly: Poly) -> complex:
-        return complex(poly.at(u, v))
+    def at(poly: Laurent) -> complex:
+        return complex(poly.evaluate({"x": u, "y": v}))
 
-    def vector(pair: tuple[Poly, Poly]) -> complex:
+    def vector(pair: tuple[Laurent, Laurent]) -> complex:
         return at(pair[0] + pair[1] * I_UNIT)
 
     source = at(p.s_star)

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from mechmodel import inputs
-from mechmodel.forces import polynomial_derivative, polynomial_integral
+from mechmodel.algebra import polynomial_derivative, polynomial_integral
 from mechmodel.numeric import complex_step_derivative
 
 # --- the dent: Fig. 7.1, (7.1)-(7.4) ---------------------------------------------------------

@@ -152,10 +152,12 @@ def energy_ellipse(m1: Any, m2: Any, v1: Any, v2: Any) -> EnergyEllipse:
 
 
 def ellipse_point(a: Any, b: Any, angle: Any) -> tuple[Any, Any]:
-    """Point (a cos s, b sin s) of the ellipse of radii a, b at the clock-hand angle s
-    (Fig. 11.1; Exercise Figs. 3.6-3.7)."""
-    inputs.positive(a, "a")
-    inputs.positive(b, "b")
+    """Point (a cos s, b sin s) of the ellipse of radii a, b >= 0 at the clock-hand angle s
+    (Fig. 11.1; Exercise Figs. 3.6-3.7); radii 0 give the point ellipse of a body at rest."""
+    for radius, name in ((a, "a"), (b, "b")):
+        inputs.real(radius, name)
+        if radius < 0:
+            raise ValueError(f"{name} must not be negative, got {radius!r}")
     inputs.real(angle, "angle")
     if _is_mp(angle):
         import mpmath
@@ -168,6 +170,5 @@ def ellipse_outline(a: Any, b: Any, points: int = 361) -> tuple[list[float], lis
     """The closed outline of the ellipse of radii a, b: ``points`` points (a cos s, b sin s)
     at equal steps of s from 0 to 2 pi, as x and y lists of floats for drawing."""
     n = inputs.count(points, "points", minimum=2)
-    a, b = float(a), float(b)
-    angles = [2 * math.pi * k / (n - 1) for k in range(n)]
-    return [a * math.cos(s) for s in angles], [b * math.sin(s) for s in angles]
+    outline = [ellipse_point(float(a), float(b), 2 * math.pi * k / (n - 1)) for k in range(n)]
+    return [x for x, _ in outline], [y for _, y in outline]

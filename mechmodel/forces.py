@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from mechmodel import inputs
+from mechmodel.algebra import polynomial_integral
 from mechmodel.collisions import collide
 from mechmodel.numeric import complex_step_derivative, log_slope
 
@@ -36,19 +37,6 @@ _CHEBYSHEV_NODES = 64  # Gauss-Chebyshev nodes of the period integral (exact for
 def _ln(x: Any) -> Any:
     """Natural logarithm of a real or complex number (complex for the complex step)."""
     return cmath.log(x) if isinstance(x, complex) else math.log(x)
-
-
-def polynomial_derivative(coefficients: Sequence[Any]) -> list[Any]:
-    """Coefficients of dp/dx for p(x) = sum c_k x^k (index k = power), by the power rule."""
-    return [k * c for k, c in enumerate(coefficients)][1:]
-
-
-def polynomial_integral(coefficients: Sequence[Any], x: Any) -> Any:
-    """The integral from 0 to ``x`` of p(x) = sum c_k x^k: sum c_k x^(k+1) / (k+1).
-
-    Exact with Fraction coefficients and ``x``.
-    """
-    return sum(c * x ** (k + 1) / (k + 1) for k, c in enumerate(coefficients))
 
 
 # --- bang rate and the bounce off a moving wall, (6.1)-(6.3), Fig. 6.2 -----------------------

@@ -25,6 +25,7 @@ from typing import Any
 import mpmath
 
 from mechmodel import fields, inputs
+from mechmodel.algebra import polynomial_derivative
 
 DIGITS = 40  # mpmath working precision (significant digits) for e and compound interest
 
@@ -503,11 +504,6 @@ def binomial_gaussian(n: Any, deviation: Any) -> dict[str, Any]:
 
 # ----------------------------------------------------------------------------------------------
 # Derivatives and the Maclaurin series (10.7)-(10.12)
-
-
-def polynomial_derivative(coefficients: list[Any]) -> list[Any]:
-    """Coefficients of dx/dt for x(t) = sum_k c_k t^k, by the power rule (10.8b)."""
-    return [k * c for k, c in enumerate(coefficients)][1:]
 
 
 @dataclass(frozen=True)

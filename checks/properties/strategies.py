@@ -10,6 +10,8 @@ from fractions import Fraction
 
 from hypothesis import strategies as st
 
+from mechmodel.algebra import Laurent
+
 MASS_RANGE = (1e-6, 1e6)
 SPEED_LIMIT = 1e3
 
@@ -598,4 +600,19 @@ def printed_decimals() -> st.SearchStrategy[str]:
         st.booleans(),
         st.text(alphabet="0123456789", min_size=1, max_size=9),
         st.integers(0, 6),
+    )
+
+
+# --- exact algebra (mechmodel.algebra) ---------------------------------------------------------
+
+
+def laurent_polynomials() -> st.SearchStrategy[Laurent]:
+    """A Laurent polynomial in x and y of one to four terms c x^i y^j, c from -3 to 3, i and j
+    from -2 to 3 (negative powers included)."""
+    term = st.tuples(st.integers(-3, 3), st.integers(-2, 3), st.integers(-2, 3))
+    return st.lists(term, min_size=1, max_size=4).map(
+        lambda terms: sum(
+            (Laurent.term(c, x=i, y=j) for c, i, j in terms),
+            Laurent(),
+        )
     )

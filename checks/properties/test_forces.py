@@ -165,19 +165,6 @@ def test_power_well_period_is_the_turning_point_integral(m: float, p: float, a: 
     assert math.isclose(forces.oscillation_period(m, 1, p, a), expected, rel_tol=1e-5)
 
 
-@given(st.lists(fraction_quantities(), min_size=1, max_size=6), fraction_quantities())
-def test_the_integral_of_a_derivative_is_the_change(
-    coefficients: list[Fraction], x: Fraction
-) -> None:
-    """The power rule and its inverse, exactly: the integral from 0 to x of dp/dx is
-    p(x) - p(0) for any polynomial (force is minus the slope of the potential and the potential
-    minus the integral of the force, (6.9), (6.12))."""
-    derivative = forces.polynomial_derivative(coefficients)
-    assert len(derivative) == len(coefficients) - 1
-    value = sum(c * x**k for k, c in enumerate(coefficients))
-    assert forces.polynomial_integral(derivative, x) == value - coefficients[0]
-
-
 @given(fraction_quantities(), fraction_quantities())
 def test_toss_height_and_launch_speed_agree(v: Fraction, g: Fraction) -> None:
     """g h = V^2 / 2 (6.13a), exactly; and sqrt(2 g h) gives back V (6.13b)."""

@@ -30,7 +30,6 @@ from checks.properties.strategies import (
     oscillator_orbits,
 )
 from mechmodel import lagrange
-from mechmodel.lagrange import Laurent
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
@@ -366,61 +365,6 @@ def test_polar_mechanics_is_the_books_algebra() -> None:
 
 
 # -- exact algebra --------------------------------------------------------------------------------
-
-
-_POLYS = st.lists(
-    st.tuples(
-        st.integers(-3, 3),
-        st.integers(-2, 3),
-        st.integers(-2, 3),
-    ),
-    min_size=1,
-    max_size=4,
-).map(
-    lambda terms: sum(
-        (Laurent.constant(c) * Laurent.var("x", i) * Laurent.var("y", j) for c, i, j in terms),
-        Laurent(),
-    )
-)
-
-
-@given(_POLYS, _POLYS)
-def test_laurent_derivative_obeys_leibniz(p: Laurent, q: Laurent) -> None:
-    """d(pq)/dx = p dq/dx + q dp/dx, and differentiation undoes integration, exactly (the
-    calculus behind every derived coefficient of chapter 12)."""
-    assert (p * q).diff("x") == p * q.diff("x") + q * p.diff("x")
-    if all(dict(k).get("x", 0) != -1 for k in p.terms):
-        assert p.integrate("x").diff("x") == p
-
-
-@given(_POLYS)
-@example(Laurent.var("x") + Laurent.var("y", 2) / 2)
-def test_laurent_prints_the_polynomial_it_holds(p: Laurent) -> None:
-    """The printed form c*x^i*y^j + ... of a Laurent polynomial, read back by sympy, is the
-    polynomial itself (x^1 printed as x): the coefficients and exponents the chapter 12
-    derivations report can be read off their printout."""
-    import sympy
-
-    x, y = sympy.symbols("x y")
-    want = sum(
-        (
-            sympy.Rational(c.numerator, c.denominator)
-            * x ** dict(k).get("x", 0)
-            * y ** dict(k).get("y", 0)
-            for k, c in p.terms.items()
-        ),
-        sympy.Integer(0),
-    )
-    got = sympy.sympify(repr(p).replace("^", "**"), locals={"x": x, "y": y})
-    assert sympy.expand(got - want) == 0
-
-
-@given(st.integers(0, 4), st.integers(0, 5), st.floats(min_value=-3, max_value=3))
-def test_trig_reduction_keeps_values(i: int, j: int, angle: float) -> None:
-    """Rewriting sin^2 = 1 - cos^2 changes the form, not the value, of cos^i sin^j."""
-    p = Laurent.var("c", i) * Laurent.var("s", j)
-    values = {"c": math.cos(angle), "s": math.sin(angle)}
-    assert abs(p.reduce_trig("c", "s").evaluate(values) - p.evaluate(values)) <= 1e-12 * 2**j
 
 
 # -- action and phase (12.42)-(12.46) -----------------------------------------------------------

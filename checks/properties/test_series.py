@@ -305,27 +305,6 @@ def test_gauss_approximates_the_binomial_near_its_peak(n: int, data: st.DataObje
     assert error <= 1.1 * (4 * x**4 / n**3 + 2 * x**2 / n**2) + 1e-12
 
 
-@given(
-    st.lists(st.integers(min_value=-50, max_value=50), min_size=1, max_size=8),
-    st.integers(min_value=-5, max_value=5),
-)
-def test_polynomial_derivative_matches_a_difference_quotient(
-    coefficients: list[int], t0: int
-) -> None:
-    """The power-rule derivative (10.8b) is the limit of the difference quotient: exact
-    arithmetic, error O(h^2)."""
-    t, h = Fraction(t0), Fraction(1, 10**6)
-
-    def x(s: Fraction) -> Fraction:
-        return sum((c * s**k for k, c in enumerate(coefficients)), Fraction(0))
-
-    slope = sum(
-        (c * t**k for k, c in enumerate(series.polynomial_derivative(coefficients))), Fraction(0)
-    )
-    quotient = (x(t + h) - x(t - h)) / (2 * h)
-    assert abs(quotient - slope) <= sum(abs(c) for c in coefficients) * 6**10 * h * h
-
-
 # -- sine and cosine --------------------------------------------------------------------------
 
 
