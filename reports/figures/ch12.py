@@ -14,10 +14,12 @@ from mechmodel.lagrange import (
     envelope_height,
     ke_ellipse_slopes,
     legendre_transform,
+    momenta,
     oscillator_paths,
     polar_jacobian,
     polar_kajobian,
     projectile_family,
+    quasi_velocities,
     trajectory_height,
 )
 from reports.figures import figure, value_of
@@ -55,12 +57,14 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     m1, m2 = float(s.mass_ratio), 1.0
     energy = 1.0
     radii = energy_ellipse_radii([m1, m2], energy)
+    # the COM point: both bodies at the velocity u with KE = 1, (m1 + m2) u^2 / 2 = 1
+    u = velocity_radius(m1 + m2, energy)
     planes = [
         (
             "$L(v)$: velocities",
             ("$v_1$ (scaled)", "$v_2$ (scaled)"),
             radii.velocity,
-            (1, 1),
+            (u, u),
             s.velocity_collision,
             s.velocity_bisector,
         ),
@@ -68,7 +72,7 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             "$E(V)$: quasi-velocities",
             (r"$V_1 = √m_1\,v_1$ (scaled)", r"$V_2 = √m_2\,v_2$ (scaled)"),
             [velocity_radius(1, energy)] * 2,  # E(V) = V.V/2: the unit-mass circle (12.5)
-            (math.sqrt(m1), math.sqrt(m2)),
+            quasi_velocities([m1, m2], [u, u]),
             s.quasi_collision,
             s.quasi_bisector,
         ),
@@ -76,20 +80,17 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             "$H(p)$: momenta",
             ("$p_1 = m_1 v_1$ (scaled)", "$p_2 = m_2 v_2$ (scaled)"),
             radii.momentum,
-            (m1, m2),
+            momenta([m1, m2], [u, u]),
             s.momentum_collision,
             s.momentum_bisector,
         ),
     ]
     fig.set_size_inches(11.0, 4.8)
     fig.set_layout_engine("constrained", w_pad=0.1)
-    for k, (title, (xlabel, ylabel), (a, b), scale, collision, bisector) in enumerate(planes):
+    for k, (title, (xlabel, ylabel), (a, b), (cx, cy), collision, bisector) in enumerate(planes):
         ax = fig.add_subplot(1, 3, k + 1)
         x, y = ellipse_outline(a, b)
         ax.plot(x, y, color="C0")
-        # COM point: both bodies at the velocity u with KE = 1: (m1 + m2) u^2 / 2 = 1
-        u = velocity_radius(m1 + m2, energy)
-        cx, cy = scale[0] * u, scale[1] * u
         span = 1.3 * max(a, b)
         t = np.linspace(-span, span, 3)
         ax.plot(
