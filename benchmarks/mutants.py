@@ -1,16 +1,20 @@
-"""Mutation run: does the test suite notice when mechmodel is wrong?
+"""Mutation run: does the test suite notice when mechmodel, or the judge, is wrong?
 
 Copies the project into a temporary directory (one copy per job), changes one small thing in one
-mechmodel module at a time (swap + and -, * and /, flip a comparison, flip a sign, nudge a
-constant, drop a factor 2, swap two returned values), and runs the tests that exercise mechmodel
-(the claim tests, the property suite, the input and sensitivity tests) against the copy with a
+module at a time (swap + and -, * and /, flip a comparison, flip a sign, nudge a constant, drop a
+factor 2, swap two returned values), and runs the tests that exercise it against the copy with a
 per-mutant timeout. A mutant is killed when the tests fail. Before the sample it checks that the
 unmutated copy passes and that a mutant that must be killed is killed (so the tests really import
 the copy). ``--only`` retries chosen mutants of the sample, as the run prints them.
 
-    python benchmarks/mutants.py [--count 150] [--seed 0] [--timeout 120] [--jobs 2]
-                                 [--module series] [--only 'mechmodel/x.py:12 swap Add']
-                                 [--book PATH]
+``--package mechmodel`` (the default) mutates the reference physics and runs the claim tests, the
+input and sensitivity tests and the mutated module's properties. ``--package reference`` mutates
+the judge (``JUDGE``: compare, numbers, tokens, calls, evaluation) and runs ``JUDGE_TESTS``; with
+``--count 0`` every site is tried, not a sample.
+
+    python benchmarks/mutants.py [--package mechmodel|reference] [--count 150] [--seed 0]
+                                 [--timeout 120] [--jobs 2] [--module series]
+                                 [--only 'mechmodel/x.py:12 swap Add'] [--book PATH]
 
 Not part of the default test run.
 """
@@ -39,6 +43,25 @@ TESTS = (
     "checks/test_mechmodel_inputs.py",
     "checks/test_sensitivity.py",
 )  # and the property module of the mutated mechmodel module
+JUDGE = ("compare", "numbers", "tokens", "calls", "evaluation")
+JUDGE_TESTS = (
+    "checks/test_claims.py",
+    "checks/test_comparison.py",
+    "checks/test_verdict_rules.py",
+    "checks/test_tokens.py",
+    "checks/test_evaluate.py",
+    "checks/test_formulas.py",
+    "checks/test_power.py",
+    "checks/test_restatements.py",
+    "checks/test_integrity.py",
+    "checks/test_exclusions.py",
+    "checks/test_catalog_errors.py",
+    "checks/properties/test_judge.py",
+)
+SANITY = {
+    "mechmodel": "mechmodel/collisions.py:0 swap Add",
+    "reference": "reference/compare.py:0 swap Add",
+}  # a mutant each run must kill
 SWAPS = {
     ast.Add: ast.Sub, ast.Sub: ast.Add, ast.Mult: ast.Div, ast.Div: ast.Mult,
     ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt,
@@ -103,9 +126,14 @@ def _mutate(kind: str, node: ast.AST) -> ast.AST:
     raise ValueError(kind)
 
 
-def enumerate_mutants(root: Path) -> list[Mutant]:
+def enumerate_mutants(root: Path, package: str = "mechmodel") -> list[Mutant]:
+    """Every mutation site of ``package``: all its modules for mechmodel, the judge's for
+    reference."""
+    paths = sorted((root / package).glob("*.py"))
+    if package == "reference":
+        paths = [root / "reference" / f"{name}.py" for name in JUDGE]
     out = []
-    for path in sorted((root / "mechmodel").glob("*.py")):
+    for path in paths:
         if path.name == "__init__.py":
             continue
         tree = ast.parse(path.read_text(encoding="utf-8"))
@@ -131,18 +159,23 @@ def apply(root: Path, mutant: Mutant, source: str) -> None:
     (root / mutant.path).write_text(ast.unparse(ast.fix_missing_locations(tree)) + "\n")
 
 
-def run_tests(root: Path, book: str, timeout: float, module: str | None = None) -> str:
-    """ "killed", "survived" or "timeout": the tests of the copy, with the property module of
-    ``module`` (all property modules when None)."""
+def run_tests(root: Path, book: str, timeout: float, mutated: str | None = None) -> str:
+    """ "killed", "survived" or "timeout": the tests of the copy for the mutated file (a
+    mechmodel module: the claim, input and sensitivity tests and its property module; a judge
+    module: ``JUDGE_TESTS``); when None, all of them."""
     env = {**os.environ, "CI": "true", "BANGCHECK_BOOK": book, "PYTHONDONTWRITEBYTECODE": "1"}
-    tests = list(TESTS)
-    properties = root / "checks" / "properties" / f"test_{module}.py"
-    if module is None:
-        tests.append("checks/properties")
-    elif properties.exists():
-        tests.append(str(properties.relative_to(root)))
+    if mutated is not None and mutated.startswith("reference/"):
+        tests = list(JUDGE_TESTS)
+    else:
+        tests = list(TESTS)
+        if mutated is None:
+            tests += ["checks/properties", *JUDGE_TESTS]
+        else:
+            properties = root / "checks" / "properties" / f"test_{Path(mutated).stem}.py"
+            if properties.exists():
+                tests.append(str(properties.relative_to(root)))
     pytest = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
-    command = [*pytest, f"--book={book}", *tests]
+    command = [*pytest, f"--book={book}", *dict.fromkeys(tests)]
     try:
         done = subprocess.run(
             command, cwd=root, env=env, capture_output=True, timeout=timeout, check=False
@@ -170,17 +203,18 @@ def try_mutant(root: Path, mutant: Mutant, book: str, timeout: float) -> str:
     original = path.read_text(encoding="utf-8")
     apply(root, mutant, original)
     try:
-        return run_tests(root, book, timeout, Path(mutant.path).stem)
+        return run_tests(root, book, timeout, mutant.path)
     finally:
         path.write_text(original, encoding="utf-8")
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--count", type=int, default=150)
+    parser.add_argument("--package", choices=sorted(SANITY), default="mechmodel")
+    parser.add_argument("--count", type=int, default=150, help="sample size; 0: every site")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--timeout", type=float, default=120)
-    parser.add_argument("--module", help="sample the sites of this mechmodel module only")
+    parser.add_argument("--module", help="sample the sites of this module only")
     parser.add_argument("--jobs", type=int, default=1, help="mutants tried at once (one copy each)")
     parser.add_argument(
         "--only",
@@ -200,13 +234,15 @@ def main() -> None:
         root = roots[0]
         if run_tests(root, book, args.timeout) != "survived":
             sys.exit("the unmutated copy fails its tests: fix that first")
-        sanity = Mutant("mechmodel/collisions.py", 0, "swap Add", 0)
+        where, kind = SANITY[args.package].split(" ", 1)
+        sanity = Mutant(where.split(":")[0], 0, kind, 0)
         if try_mutant(root, sanity, book, args.timeout) != "killed":
             sys.exit("the sanity mutant survived: are the tests importing the copy?")
-        mutants = enumerate_mutants(root)
+        mutants = enumerate_mutants(root, args.package)
         if args.module:
             mutants = [m for m in mutants if Path(m.path).stem == args.module]
-        sample = random.Random(args.seed).sample(mutants, min(args.count, len(mutants)))
+        count = len(mutants) if args.count == 0 else min(args.count, len(mutants))
+        sample = random.Random(args.seed).sample(mutants, count)
         if args.only:
             sample = [m for m in sample if str(m) in args.only]
             unknown = set(args.only) - {str(m) for m in sample}

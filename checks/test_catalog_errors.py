@@ -193,11 +193,12 @@ ERRATUM = 'expect = "erratum"\ncorrect = "3.62"\ndiagnosis = { kind = "other", n
         ('same_error = "ch08.t.nope"', "same_error"),
         ('same_error = "ch08.t.m1"', "same_error"),
         ('summary = "s"\nedition = "CODATA 1973"', "edition"),
+        ('summary = "s"\nreads = "velocity V3=3.62."', "reads"),  # the quote as it stands
     ],
 )
 def test_error_fields(tmp_path: Path, book: Book, extra: str, field: str) -> None:
     """summary on the first claim only; same_error names another erratum; edition only on a
-    dated claim."""
+    dated claim; reads differs from the quote."""
     text = (META + GIVENS + V3).replace('expect = "verified"', ERRATUM + extra)
     found = problems_of(tmp_path, book, text)
     assert ("ch08.t.v3", field) in [(p.id, p.field) for p in found], found

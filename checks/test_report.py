@@ -439,21 +439,21 @@ def test_a_failing_evaluation_starts_no_background_build(
 ) -> None:
     """When the catalog cannot be evaluated, the session starts nothing in the background and
     raises nothing at collection: the tests that read the evaluation fail with the reason."""
-    import conftest
+    from checks.plugins import caches, keys
 
     def broken(config: object) -> Evaluation:
         raise ValueError("a model raised")
 
-    monkeypatch.setattr(conftest, "evaluation_of", broken)
+    monkeypatch.setattr(caches, "evaluation_of", broken)
     config = types.SimpleNamespace(option=types.SimpleNamespace(collectonly=False), stash={})
-    config.stash[conftest._BOOK] = book
+    config.stash[keys.BOOK] = book
     reporting = types.SimpleNamespace(
         fixturenames=("report_dir",), get_closest_marker=lambda name: None
     )
     prop = types.SimpleNamespace(fixturenames=(), get_closest_marker=lambda name: name)
     session = types.SimpleNamespace(config=config, items=[reporting] + [prop] * 100)
-    conftest._start_report_in_background(session)
-    assert conftest._REPORT not in config.stash
+    caches.start_report_in_background(session)
+    assert keys.REPORT not in config.stash
 
 
 def test_the_detection_power_section(report_dir: Path, evaluation: Evaluation) -> None:
@@ -512,7 +512,7 @@ def test_a_partial_run_is_marked_with_its_scope_and_age(
 
 
 def test_the_recorder_says_what_a_run_selected(tmp_path: Path) -> None:
-    from checks.properties.recorder import InvariantRecorder
+    from checks.plugins.invariants import InvariantRecorder
 
     def recorder(args: list[str], keyword: str = "", markexpr: str = "") -> InvariantRecorder:
         config = types.SimpleNamespace(

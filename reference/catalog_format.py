@@ -55,6 +55,7 @@ CLAIM_KEYS = (
     "restates",
     "expect",
     "correct",
+    "reads",
     "diagnosis",
     "same_error",
     "summary",

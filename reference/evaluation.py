@@ -114,6 +114,7 @@ class EvaluatedClaim:
     error_class: str | None
     section: str | None
     catches: list[str] | None
+    reads: str | None = None
 
     @property
     def passed(self) -> bool:
@@ -618,6 +619,7 @@ class _Evaluator:
             error_class=None,
             section=None,
             catches=None,
+            reads=claim.reads,
         )
 
 

@@ -23,14 +23,23 @@ class PickError(ValueError):
 
 
 def resolve(name: str) -> Callable[..., Any]:
-    """The mechmodel function called ``module.function``; ``LookupError`` if there is none."""
+    """The mechmodel function called ``module.function``; ``LookupError`` if there is none.
+
+    A module's public functions are those its ``__all__`` lists, or, without one, those it
+    defines itself: a name it merely imports (``bangs.dataclass``, ``fields.math``) is not a
+    model."""
     module_name, _, func_name = name.partition(".")
     try:
         module = importlib.import_module(f"mechmodel.{module_name}")
     except ModuleNotFoundError as err:
         raise LookupError(f"no module mechmodel.{module_name}") from err
     func = getattr(module, func_name, None)
-    if func is None or not callable(func) or func_name.startswith("_"):
+    public = getattr(module, "__all__", None)
+    if public is not None:
+        exported = func_name in public
+    else:
+        exported = getattr(func, "__module__", None) == module.__name__
+    if func is None or not callable(func) or func_name.startswith("_") or not exported:
         raise LookupError(f"mechmodel.{module_name} has no public function {func_name!r}")
     return func
 

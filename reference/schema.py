@@ -166,6 +166,7 @@ class Claim(_Strict):
     same_error: Text | None = None
     summary: Text | None = None
     correct: Text | None = None
+    reads: Text | None = None  # the quote as it should read, for a correction in words
     diagnosis: Diagnosis | None = None
     figure: Text | None = None
     equation: Text | None = None

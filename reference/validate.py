@@ -219,7 +219,8 @@ class _Checker:
             add("expect", "a formula is verified or an erratum")
 
     def check_error_fields(self, f: ChapterFile, c: Claim) -> None:
-        """``same_error``, ``summary``, ``edition``, ``tokens`` and a missing ``printed``."""
+        """``same_error``, ``summary``, ``reads``, ``edition``, ``tokens`` and a missing
+        ``printed``."""
         add = lambda field, msg: self.add(f, c.id, field, msg)  # noqa: E731
         if c.tokens and c.kind != "formula":
             add("tokens", "only a formula claim lists the tokens it covers")
@@ -238,6 +239,8 @@ class _Checker:
             add("summary", "the first claim of an error needs a one-sentence summary")
         if c.summary is not None and c.expect != "erratum":
             add("summary", "only an erratum carries a summary")
+        if c.reads is not None and (c.expect != "erratum" or c.reads == c.quote):
+            add("reads", "an erratum's quote as it should read: differs from the quote")
         if c.expect == "dated":
             if c.edition is None:
                 add("edition", "a dated claim names the edition it matches")

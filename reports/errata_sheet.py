@@ -88,8 +88,11 @@ def _pretty(number: str) -> str:
 
 def _correction(claim: EvaluatedClaim) -> tuple[str, str]:
     """("for" the quoted span, "read" the correction) of one claim, as the book writes it: a
-    garbled number shown as it stands in the book (its ``means``), a formula as transcribed."""
+    garbled number shown as it stands in the book (its ``means``), a formula as transcribed, a
+    correction in words as the catalog's ``reads`` gives it."""
     correct = claim.correct or ""
+    if claim.reads:  # a correction in words: "5% shorter" read "5% longer"
+        return claim.quote, claim.reads
     if claim.kind == "formula":  # the formula as transcribed: a quote may be a fragment of it
         return unicode_formula(claim.expression or ""), unicode_formula(correct)
     printed, quote = claim.printed, claim.quote

@@ -202,9 +202,10 @@ def _member(evaluation: Evaluation, claim: EvaluatedClaim) -> dict[str, Any]:
         "context": _context(evaluation.book, claim),
         "printed": printed_shown(claim),
         "correct": correct or DASH,
-        "model": (claim.model_expression or "")
+        "model": unicode_formula(claim.model_expression or "")
         if claim.kind == "formula"
         else number(claim.model_value),
+        "reads": claim.reads or "",
         "unit": "" if claim.unit in ("1", "scaled") else claim.unit,
         "curator": curator,
         "auto": auto,

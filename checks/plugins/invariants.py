@@ -6,8 +6,8 @@ examples ran, the worst value of any ``hypothesis.target`` score (the suite targ
 conservation errors there) and the outcome. At the end of the session the controller (not an xdist
 worker) writes ``.bangcheck/properties.json`` in pytest's rootdir (``reports.invariants``), which
 ``bangcheck report`` shows with its date. Examples and scores come from the run statistics
-Hypothesis hands to ``hypothesis.statistics.collector`` once per test (the same ones its pytest
-plugin prints with ``--hypothesis-show-statistics``); they cost nothing per example.
+Hypothesis hands over once per test (``checks.plugins.hypothesis_api.collecting``; the same ones
+its pytest plugin prints with ``--hypothesis-show-statistics``); they cost nothing per example.
 """
 
 from __future__ import annotations
@@ -20,8 +20,8 @@ from typing import Any
 
 import pytest
 from hypothesis import settings
-from hypothesis.statistics import collector
 
+from checks.plugins.hypothesis_api import collecting
 from reports.invariants import write_properties
 
 _REFERENCE = re.compile(r"\((?:\d+|1\.A)\.\d+[a-z]?\)|Figs?\. \d+\.\d+(?:\([a-z]\)|[a-z])?")
@@ -34,10 +34,9 @@ def _law(doc: str | None) -> str:
 
 
 class _Statistics:
-    """Receives a test's run statistics and passes them on to whoever else listens."""
+    """Receives a test's run statistics: the valid examples and the worst target score."""
 
-    def __init__(self, previous: Any) -> None:
-        self.previous = previous
+    def __init__(self) -> None:
         self.examples = 0
         self.worst: float | None = None
 
@@ -49,8 +48,6 @@ class _Statistics:
         scores = [v for v in stats.get("targets", {}).values() if isinstance(v, int | float)]
         if scores:
             self.worst = max(scores)
-        if self.previous is not None:
-            self.previous(stats)
 
 
 class InvariantRecorder:
@@ -84,9 +81,9 @@ class InvariantRecorder:
     def pytest_runtest_call(self, item: pytest.Item) -> Generator[None]:
         if item.get_closest_marker("properties") is None:
             return (yield)
-        observer = _Statistics(collector.value)
+        observer = _Statistics()
         try:
-            with collector.with_value(observer):
+            with collecting(observer):
                 return (yield)
         finally:
             function = getattr(item, "function", None)

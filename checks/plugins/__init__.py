@@ -1,0 +1,1 @@
+"""The pytest plugins of the suite, listed in the root ``conftest.py``."""
