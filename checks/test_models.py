@@ -26,6 +26,12 @@ def test_an_imported_private_or_missing_name_is_no_model(name: str) -> None:
         resolve(name)
 
 
+def test_a_shared_layer_function_resolves_through_its_topic() -> None:
+    from mechmodel import numeric
+
+    assert resolve("fields.line_angle") is numeric.line_angle
+
+
 def test_a_module_with_all_exports_exactly_those(monkeypatch: pytest.MonkeyPatch) -> None:
     module = types.ModuleType("mechmodel.fake_topic")
 

@@ -25,9 +25,10 @@ class PickError(ValueError):
 def resolve(name: str) -> Callable[..., Any]:
     """The mechmodel function called ``module.function``; ``LookupError`` if there is none.
 
-    A module's public functions are those its ``__all__`` lists, or, without one, those it
-    defines itself: a name it merely imports (``bangs.dataclass``, ``fields.math``) is not a
-    model."""
+    A module's public functions are those its ``__all__`` lists, or, without one, those
+    defined in mechmodel: its own and those it re-exports from the shared layer
+    (``fields.line_angle`` from ``numeric``); a name it imports from elsewhere
+    (``bangs.dataclass``, ``fields.math``) is not a model."""
     module_name, _, func_name = name.partition(".")
     try:
         module = importlib.import_module(f"mechmodel.{module_name}")
@@ -38,7 +39,8 @@ def resolve(name: str) -> Callable[..., Any]:
     if public is not None:
         exported = func_name in public
     else:
-        exported = getattr(func, "__module__", None) == module.__name__
+        home = getattr(func, "__module__", None) or ""
+        exported = home == "mechmodel" or home.startswith("mechmodel.")
     if func is None or not callable(func) or func_name.startswith("_") or not exported:
         raise LookupError(f"mechmodel.{module_name} has no public function {func_name!r}")
     return func
