@@ -43,13 +43,17 @@ def relation(rel: str, printed: str, model: float, **kw: object) -> str:
         ("45°", Fraction(45), Fraction(1, 2)),
         (".5", Fraction(1, 2), Fraction(5, 100)),
         ("1.5^2", Fraction(9, 4), 2 * Fraction(3, 2) * Fraction(5, 100)),  # d(b^2) = 2 b db
+        ("6.28^2e6", Fraction(628**2 * 100), 2 * Fraction(628, 100) * Fraction(5, 1000) * 10**6),
     ],
 )
 def test_printed_precision_comes_from_its_digits(
     printed: str, value: Fraction, half: Fraction
 ) -> None:
+    """h, and the unit of rounding (a truncation's step, the digits of the automatic
+    diagnosis) twice h, for every form: a caret's h is its base's, propagated."""
     p = parse_number(printed)
     assert (p.value, p.half_width, p.exact) == (value, half, False)
+    assert p.quantum == 2 * half
 
 
 @pytest.mark.parametrize(

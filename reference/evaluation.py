@@ -144,7 +144,7 @@ class Evaluation(Sequence[EvaluatedClaim]):
     claims: tuple[EvaluatedClaim, ...]
     catalog: Catalog = field(repr=False)
     book: Book = field(repr=False)
-    model_calls: int = 0
+    model_calls: int
     contexts: Mapping[str, Context] = field(default_factory=dict, repr=False)
     centres: Mapping[str, Fraction] = field(default_factory=dict, repr=False)
     misprints: Mapping[str, list[Outcome]] = field(default_factory=dict, repr=False)
@@ -504,7 +504,8 @@ class _Evaluator:
             else:
                 ctx = self.context(claim, source, scale)
                 value = source.value * float(scale) if scale != 1 else source.value
-                modelled = dataclasses.replace(source, value=value, interval=ctx.interval)
+                centre = None if source.centre is None else source.centre * scale
+                modelled = _Modelled(value, ctx.interval, source.interval_note, ctx.error, centre)
                 judgement = judge(printed, ctx)
         elif claim.model is None:
             judgement = Judgement("unmodeled", None, None)
