@@ -213,6 +213,10 @@ def test_input_interval_gives_rounding() -> None:
     assert verdict("3.80", 3.65, interval=box) == ("erratum", None)
     assert verdict("3.73", 3.65, interval=box) == ("rounding", "input-rounding")  # widened by h
     assert verdict("3.74", 3.65, interval=box) == ("erratum", None)
+    # widened by h (1 + 1e-9), its ends included (an exact model value can sit on them)
+    h = Fraction(5, 1000) * (1 + Fraction(1, 10**9))
+    exactly = (Fraction("3.62") + h, Fraction("3.70"))
+    assert verdict("3.62", 3.65, interval=exactly) == ("rounding", "input-rounding")
     # widened by h, not more: 1.3 h past the box's end is outside
     assert verdict("3.73", 3.65, interval=(exact(3.575), exact(3.7235))) == ("erratum", None)
 

@@ -437,7 +437,8 @@ def test_a_between_claim_holds_between_its_bounds(
 def test_a_count_returned_as_a_large_int_is_compared_exactly(
     book: Book, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """2^64 - 1 grains: an int model value is not rounded to a float (which would be 2^64)."""
+    """2^64 - 1 grains: an int model value is not rounded to a float (which would be 2^64),
+    nor where a claim restates it; a count admits no rounding (tolerance 0)."""
     fake_model(monkeypatch, lambda: 2**64 - 1)
     c = claim(
         id="ch08.n",
@@ -447,9 +448,22 @@ def test_a_count_returned_as_a_large_int_is_compared_exactly(
         expect="verified",
         model="towers.x",
     )
-    assert run(book, c)["ch08.n"].verdict == "verified"
+    result = run(book, c)["ch08.n"]
+    assert (result.verdict, result.tolerance) == ("verified", 0.0)
     off = c.model_copy(update={"printed": "18,446,744,073,709,551,616"})
     assert run(book, off)["ch08.n"].verdict == "erratum"
+    again = claim(
+        id="ch08.again",
+        printed="18,446,744,073,709,551,616",
+        kind="count",
+        unit="1",
+        expect="erratum",
+        restates="ch08.n",
+        correct="18,446,744,073,709,551,615",
+        diagnosis={"kind": "arithmetic", "note": "n"},
+    )
+    restated = run(book, c, again)["ch08.again"]
+    assert (restated.verdict, restated.correct_agrees) == ("erratum", True)
 
 
 def test_an_unexpected_erratum_is_diagnosed_against_the_model_at_the_printed_precision(

@@ -88,12 +88,12 @@ def test_token_span_and_line() -> None:
 
 def test_minus_variants_normalize() -> None:
     assert normalize("−7.071") == normalize("–7.071") == "-7.071"
-    assert tokenize_line("−7.071")[0].norm == "-7.071"
+    assert tokenize_line("−7.071", 4685)[0].norm == "-7.071"
 
 
 def test_a_sign_at_the_end_of_a_line_is_no_token() -> None:
-    assert tokenize_line("Ka-") == []
-    assert tokenize_line("x = -") == []
+    assert tokenize_line("Ka-", 1) == []
+    assert tokenize_line("x = -", 1) == []
 
 
 def test_tokenize_numbers_lines() -> None:

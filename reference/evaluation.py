@@ -298,10 +298,8 @@ class _Evaluator:
         if modelled.interval is not None or modelled.error:
             return False
         value = modelled.value
-        if isinstance(value, complex):
-            if value.imag != 0:
-                return False
-            value = value.real
+        if isinstance(value, complex):  # never with a zero imaginary part: _convert made it real
+            return False
         stated = parsed(claim).value
         if isinstance(value, int | Fraction):
             return Fraction(value) == stated
