@@ -293,6 +293,10 @@ def test_order_of_magnitude() -> None:
     assert in_order_of(exact(9.9e-44), Fraction(1, 10**43))  # within half a decade
     assert not in_order_of(exact(2e-44), Fraction(1, 10**43))
     assert not in_order_of(exact(1e-42), Fraction(1, 10**43))
+    assert in_order_of(exact(math.sqrt(10)), Fraction(10))  # half a decade exactly
+    assert in_order_of(Fraction(1), Fraction(3))  # 1 is of order 10^0
+    assert not in_order_of(Fraction(0), Fraction(10))  # zero is of no order
+    assert in_order_of(Fraction(0), Fraction(0))
     # half a decade, no more: 10^-43.498 is of order 10^-43, 10^-43.502 is not
     assert in_order_of(exact(10**-43.498), Fraction(1, 10**43))
     assert not in_order_of(exact(10**-43.502), Fraction(1, 10**43))

@@ -466,13 +466,15 @@ def test_a_count_returned_as_a_large_int_is_compared_exactly(
     assert (restated.verdict, restated.correct_agrees) == ("erratum", True)
 
 
+@pytest.mark.parametrize(("printed", "model"), [("3.26", 3.6213), ("326", 362.13)])
 def test_an_unexpected_erratum_is_diagnosed_against_the_model_at_the_printed_precision(
-    book: Book, monkeypatch: pytest.MonkeyPatch
+    book: Book, monkeypatch: pytest.MonkeyPatch, printed: str, model: float
 ) -> None:
     """A claim expected verified that misses gets the automatic diagnosis from the model
-    written to the printed digits: 3.26 for 3.6213 is a digit swap of 3.62."""
-    fake_model(monkeypatch, lambda: 3.6213)
-    c = claim(id="ch08.s", printed="3.26", kind="derived", expect="verified", model="towers.x")
+    written to the printed digits: 3.26 for 3.6213 is a digit swap of 3.62, 326 for 362.13
+    one of 362."""
+    fake_model(monkeypatch, lambda: model)
+    c = claim(id="ch08.s", printed=printed, kind="derived", expect="verified", model="towers.x")
     result = run(book, c)["ch08.s"]
     assert result.verdict == "erratum"
     assert result.diagnosis is not None
