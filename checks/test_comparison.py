@@ -98,12 +98,16 @@ def test_sigfigs_widen_the_half_width() -> None:
     assert p.half_width == 5 * 10**8
     assert judge(p, Context(exact(8.98755e9))).verdict == "verified"
     assert judge(parse_number("9,000,000,000"), Context(exact(8.98755e9))).verdict == "erratum"
+    assert parse_number("1", sigfigs=1).half_width == Fraction(1, 2)
+    with pytest.raises(NumberFormatError, match="printed zero"):
+        parse_number("0.0", sigfigs=1)
 
 
 def test_an_exact_integer_has_no_half_unit_of_slack() -> None:
     """ "-1 radian" names exactly one radian (line 1393): read as exact, -0.5708 rad is an
     erratum, as the same angle printed -57.3° is; read as a rounded integer it would pass."""
     model = 1 - math.pi / 2
+    assert parse_number("-1", exact=True).half_width == 0
     assert judge(parse_number("-1", exact=True), Context(exact(model))).verdict == "erratum"
     assert judge(parse_number("-1"), Context(exact(model))).verdict == "verified"
     assert judge(parse_number("-57.3°"), Context(exact(math.degrees(model)))).verdict == ("erratum")
@@ -136,6 +140,17 @@ def test_the_float_slack_is_a_billionth_of_h() -> None:
     h = 0.05
     assert verdict("5.8", 5.75 - 0.5e-9 * h) == ("verified", None)
     assert verdict("5.8", 5.75 - 1.5e-9 * h) == ("erratum", None)
+    # the edge itself is inside (a model may return an exact Fraction)
+    edge = Fraction("5.75") - Fraction(5, 100) * Fraction(1, 10**9)
+    assert verdict("5.8", edge) == ("verified", None)  # type: ignore[arg-type]
+
+
+def test_an_exact_form_admits_sixteen_ulps() -> None:
+    """A printed fraction is exact: the model's float may be off by the 16 ulps of a few
+    operations, not 17."""
+    ulp = math.ulp(0.5)
+    assert verdict("1/2", 0.5 + 16 * ulp) == ("verified", None)
+    assert verdict("1/2", 0.5 + 17 * ulp) == ("erratum", None)
 
 
 def test_trailing_zeros_count() -> None:
@@ -192,6 +207,8 @@ def test_plus_minus_against_an_input_interval_compares_magnitudes() -> None:
     straddles = (Fraction(-1), Fraction(2))
     assert verdict("±0.5", 1.5, interval=straddles) == ("rounding", "input-rounding")
     assert verdict("±2.5", 1.5, interval=straddles) == ("erratum", None)
+    deeper = (Fraction(-2), Fraction(1))  # the larger magnitude at the negative end
+    assert verdict("±1.8", 0.5, interval=deeper) == ("rounding", "input-rounding")
     ends_at_zero = (Fraction(-2), Fraction(0))
     assert verdict("±1.0", -1.5, interval=ends_at_zero) == ("rounding", "input-rounding")
     assert verdict("±1.0", 1.5, interval=(Fraction(0), Fraction(2))) == (
@@ -264,6 +281,7 @@ def test_count_is_exact() -> None:
         ("<", "3.0", 3.0, "erratum"),
         (">", "9.0", 9.4, "verified"),
         (">", "9.0", 8.9, "erratum"),
+        (">", "9.0", 9.0, "erratum"),
         ("<=", "3", 3, "verified"),
         ("<=", "3", 4, "erratum"),
         (">=", "3", 2, "erratum"),
@@ -277,6 +295,9 @@ def test_order_relations(rel: str, printed: str, model: float, expected: str) ->
 def test_approximate_relation() -> None:
     assert relation("~", "5.8", 5.65, rel_tol=Fraction(5, 100)) == "verified"
     assert relation("~", "5.8", 5.0, rel_tol=Fraction(5, 100)) == "erratum"
+    assert relation("~", "4", 5.0, rel_tol=Fraction(1, 4)) == "verified"  # the edge is in
+    assert relation("~", "4", 3.0, rel_tol=Fraction(1, 4)) == "verified"
+    assert relation("~", "4", 5.01, rel_tol=Fraction(1, 4)) == "erratum"
 
 
 def test_between() -> None:
@@ -295,6 +316,7 @@ def test_order_of_magnitude() -> None:
     assert not in_order_of(exact(1e-42), Fraction(1, 10**43))
     assert in_order_of(exact(math.sqrt(10)), Fraction(10))  # half a decade exactly
     assert in_order_of(Fraction(1), Fraction(3))  # 1 is of order 10^0
+    assert in_order_of(Fraction(10), Fraction(80))  # 10^k itself is of order 10^k
     assert not in_order_of(Fraction(0), Fraction(10))  # zero is of no order
     assert in_order_of(Fraction(0), Fraction(0))
     # half a decade, no more: 10^-43.498 is of order 10^-43, 10^-43.502 is not

@@ -4,6 +4,8 @@
 
 from __future__ import annotations
 
+import math
+from fractions import Fraction
 from types import SimpleNamespace
 from typing import Any
 
@@ -337,6 +339,9 @@ def test_a_model_declared_not_monotonic_is_sampled_at_corners_centre_and_halfway
     assert result.model_calls == 3**5 + 1  # and the nominal call (its inputs ints, 2 not 2.0)
     assert sorted(set(seen)) == pytest.approx([1.95, 2.0, 2.05])
     assert result.by_id()["ch08.n"].interval == pytest.approx([9.75, 10.25])
+    six = evaluated(book, *summed(6))  # 3^6 = 729 calls: just within the limit
+    assert six.model_calls == 3**6 + 1
+    assert six.by_id()["ch08.n"].interval == pytest.approx([11.7, 12.3])
 
 
 def test_a_complex_model_value_must_be_real(book: Book, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -350,6 +355,17 @@ def test_a_complex_model_value_must_be_real(book: Book, monkeypatch: pytest.Monk
     assert (small.verdict, small.model_value) == ("verified", [2.0, 0.01])
     unit = run(book, c.model_copy(update={"args": {"im": 1.0}}))["ch08.c"]
     assert (unit.verdict, unit.model_value) == ("erratum", [2.0, 1.0])
+
+
+def test_an_imaginary_part_of_exactly_h_is_admitted(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """As for the real part, the edge belongs: 2 + 0.5i against "2" (h = 0.5)."""
+    fake_model(monkeypatch, lambda im: complex(2.0, im))
+    c = claim(id="ch08.c", printed="2", kind="derived", expect="verified", model="towers.x")
+    edge = run(book, c.model_copy(update={"args": {"im": 0.5}}))["ch08.c"]
+    past = run(book, c.model_copy(update={"args": {"im": 0.5000001}}))["ch08.c"]
+    assert (edge.verdict, past.verdict) == ("verified", "erratum")
 
 
 def test_a_complex_value_restated_in_another_unit_converts_its_imaginary_part_too(
@@ -499,6 +515,10 @@ def test_a_correct_value_finer_than_printed_is_exact(
     assert run(book, c)["ch08.e"].correct_agrees is True
     wrong = run(book, c.model_copy(update={"correct": "3.62"}))["ch08.e"]
     assert (wrong.verdict, wrong.correct_agrees, wrong.passed) == ("erratum", False, False)
+    # more figures at the same decimals is not finer: "10.5" for "0.5" is read to its h
+    fake_model(monkeypatch, lambda: 10.52)
+    shifted = c.model_copy(update={"printed": "0.5", "correct": "10.5"})
+    assert run(book, shifted)["ch08.e"].correct_agrees is True
 
 
 def test_progress_counts_the_claims_evaluated(
@@ -579,3 +599,133 @@ def test_a_constant_is_judged_within_h_plus_twice_its_uncertainty(
     )
     result = run(book, c)["ch08.r"]
     assert (result.verdict, result.matched_edition) == (expected, edition)
+
+
+def test_an_interval_of_exactly_ten_h_is_not_wide(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Wide means wider than 10 h: a model stepping by exactly 0.025 either side of 1.10
+    spans 10 h = 0.05."""
+    step = Fraction(25, 1000)
+    fake_model(monkeypatch, lambda v: Fraction(11, 10) + (step if v > 2.1 else -step))
+    c = claim(
+        id="ch08.y",
+        printed="1.10",
+        kind="derived",
+        expect="rounding",
+        model="towers.x",
+        args={"v": {"claim": "ch08.v"}},
+    )
+    result = run(book, _rounded_given(), c)["ch08.y"]
+    assert result.interval == [1.075, 1.125]
+    assert result.interval_wide is False
+
+
+def test_a_model_error_is_converted_to_the_printed_unit(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A model in SI declares 1 cm of error on 3615.3 m: printed in km that is 1e-5 km, which
+    leaves "3.62" verified."""
+    fake_model(monkeypatch, lambda: SimpleNamespace(value=3615.3, error=0.01))
+    c = claim(
+        id="ch08.km", printed="3.62", unit="km", kind="derived", expect="verified", model="t.x"
+    )
+    result = run(book, c)["ch08.km"]
+    assert (result.verdict, result.model_error) == ("verified", pytest.approx(1e-5))
+
+
+def test_progress_every_two_hundred_claims(
+    book: Book, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    fake_model(monkeypatch, lambda: 3.62)
+    claims = [
+        claim(id=f"ch08.p{i}", printed="3.62", kind="derived", expect="verified", model="t.x")
+        for i in range(201)
+    ]
+    evaluated(book, *claims, progress=True)
+    assert capsys.readouterr().err.splitlines() == [
+        "bangcheck: evaluated 200/201 claims",
+        "bangcheck: evaluated 201/201 claims",
+    ]
+
+
+def test_an_exact_whole_datum_printed_whole_admits_no_rounding(book: Book) -> None:
+    """5,280 feet to the mile is exact: its tolerance is 0, not half a foot."""
+    c = claim(
+        id="ch08.ft",
+        printed="5,280",
+        kind="constant",
+        unit="1",
+        constant="feet-per-mile",
+        expect="verified",
+    )
+    result = run(book, c)["ch08.ft"]
+    assert (result.verdict, result.tolerance) == ("verified", 0.0)
+    rounded = run(book, c.model_copy(update={"printed": "5,280.0"}))["ch08.ft"]
+    assert (rounded.verdict, rounded.tolerance) == ("verified", 0.05)
+
+
+@pytest.mark.parametrize(("ulps", "interval"), [(16, None), (17, [-0.05, 0.05])])
+def test_a_derived_input_within_sixteen_ulps_of_its_model_is_exact(
+    book: Book, monkeypatch: pytest.MonkeyPatch, ulps: int, interval: list[float] | None
+) -> None:
+    """A model's 0.5 off by the 16 ulps of float arithmetic is the printed 0.5 exactly: a
+    claim using it gets no interval from it; 17 ulps off, it is a rounded input."""
+    off = 0.5 + ulps * math.ulp(0.5)
+    fake_model(monkeypatch, lambda v=None: off if v is None else v - off)
+    half = claim(id="ch08.h", printed="0.5", kind="derived", expect="verified", model="t.x")
+    using = claim(
+        id="ch08.u",
+        printed="0.0",
+        kind="derived",
+        expect="verified",
+        model="t.x",
+        args={"v": {"claim": "ch08.h"}},
+    )
+    result = run(book, half, using)["ch08.u"]
+    assert result.interval == (None if interval is None else pytest.approx(interval, abs=1e-9))
+
+
+def test_a_rounded_assumption_keeps_its_decimals(
+    book: Book, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An assumption "2.5" is passed as 2.5, and one "24" as the int 24."""
+    fake_model(monkeypatch, lambda speed, n: speed * n if isinstance(n, int) else -1.0)
+    c = claim(
+        id="ch08.a",
+        printed="60",
+        kind="derived",
+        expect="verified",
+        model="t.x",
+        assumptions={
+            "speed": {"value": "2.5", "rounded": True, "reason": "r"},
+            "n": {"value": "24", "reason": "r"},
+        },
+    )
+    result = run(book, c)["ch08.a"]
+    assert result.model_value == 60.0
+    assert result.interval == pytest.approx([2.45 * 24, 2.55 * 24])
+
+
+@pytest.mark.parametrize("count", [10, 11])
+def test_a_monotonic_model_gets_corners_for_ten_rounded_inputs_not_eleven(
+    book: Book, monkeypatch: pytest.MonkeyPatch, count: int
+) -> None:
+    """2^10 = 1024 corners are computed; with 11 rounded inputs the interval is left out and
+    the note says why."""
+    fake_model(monkeypatch, lambda **v: sum(v.values()))
+    givens = [_rounded_given(f"ch08.v{i}", "2.1") for i in range(count)]
+    c = claim(
+        id="ch08.n",
+        printed=f"{2.1 * count:.1f}",
+        kind="derived",
+        expect="verified",
+        model="t.x",
+        args={f"v{i}": {"claim": f"ch08.v{i}"} for i in range(count)},
+    )
+    result = run(book, *givens, c)["ch08.n"]
+    if count == 10:
+        assert (result.interval, result.interval_note) == (pytest.approx([20.5, 21.5]), None)
+    else:
+        assert result.interval is None
+        assert result.interval_note == "11 rounded inputs: too many corners for an interval"

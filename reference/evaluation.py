@@ -377,7 +377,7 @@ class _Evaluator:
             imag = exact(value.imag) * scale
             value = value.real
         interval = modelled.interval
-        if interval is not None and scale != 1:
+        if interval is not None:
             interval = tuple(sorted((interval[0] * scale, interval[1] * scale)))
         bounds = None
         if claim.bounds is not None:
