@@ -67,7 +67,7 @@ CASES = [
 
 
 def _rule_of(fragment: str, token: str, occurrence: int) -> str | None:
-    found = [t for t in tokenize_line(fragment) if t.text == token]
+    found = [t for t in tokenize_line(fragment, 1) if t.text == token]
     tok = found[occurrence - 1]
     return excluded_by(rule_spans([fragment], 1), tok.start, tok.end)
 

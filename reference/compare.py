@@ -101,12 +101,13 @@ def inside(diff: Fraction, tol: Fraction) -> bool:
 
 
 def is_truncation(printed: Printed, model: Fraction) -> bool:
-    """Whether the printed value is the model cut toward zero at the printed digit."""
+    """Whether the printed value is the model cut toward zero at the printed digit (with the
+    model's sign; a cut to zero has either sign)."""
     q = printed.quantum
     if q is None:
         return False
     cut = Fraction(math.trunc(abs(model) / q)) * q
-    return cut == abs(printed.value) and (model >= 0) == (printed.value >= 0)
+    return cut == abs(printed.value) and model * printed.value >= 0
 
 
 def _in_interval(printed: Printed, interval: tuple[Fraction, Fraction], tol: Fraction) -> bool:

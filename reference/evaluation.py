@@ -144,7 +144,7 @@ class Evaluation(Sequence[EvaluatedClaim]):
     claims: tuple[EvaluatedClaim, ...]
     catalog: Catalog = field(repr=False)
     book: Book = field(repr=False)
-    model_calls: int = 0
+    model_calls: int
     contexts: Mapping[str, Context] = field(default_factory=dict, repr=False)
     centres: Mapping[str, Fraction] = field(default_factory=dict, repr=False)
     misprints: Mapping[str, list[Outcome]] = field(default_factory=dict, repr=False)
@@ -298,10 +298,8 @@ class _Evaluator:
         if modelled.interval is not None or modelled.error:
             return False
         value = modelled.value
-        if isinstance(value, complex):
-            if value.imag != 0:
-                return False
-            value = value.real
+        if isinstance(value, complex):  # never with a zero imaginary part: _convert made it real
+            return False
         stated = parsed(claim).value
         if isinstance(value, int | Fraction):
             return Fraction(value) == stated
@@ -379,7 +377,7 @@ class _Evaluator:
             imag = exact(value.imag) * scale
             value = value.real
         interval = modelled.interval
-        if interval is not None and scale != 1:
+        if interval is not None:
             interval = tuple(sorted((interval[0] * scale, interval[1] * scale)))
         bounds = None
         if claim.bounds is not None:
@@ -504,7 +502,8 @@ class _Evaluator:
             else:
                 ctx = self.context(claim, source, scale)
                 value = source.value * float(scale) if scale != 1 else source.value
-                modelled = dataclasses.replace(source, value=value, interval=ctx.interval)
+                centre = None if source.centre is None else source.centre * scale
+                modelled = _Modelled(value, ctx.interval, source.interval_note, ctx.error, centre)
                 judgement = judge(printed, ctx)
         elif claim.model is None:
             judgement = Judgement("unmodeled", None, None)

@@ -53,7 +53,6 @@ class Printed:
     half_width: Fraction
     exact: bool
     absolute: bool
-    mark: str
     quantum: Fraction | None
     irrational: bool = False
 
@@ -118,9 +117,8 @@ def parse_number(text: str, *, sigfigs: int | None = None, exact: bool = False) 
     negative = s.startswith("-")
     if s[:1] in "+-":
         s = s[1:]
-    mark = ""
-    if s[-1:] in ("%", "°"):
-        mark, s = s[-1], s[:-1]
+    if s[-1:] in ("%", "°"):  # a mark: part of the text, not of the value
+        s = s[:-1]
     if not s:
         raise NumberFormatError(f"not a number: {raw!r}")
     value, half, is_exact, quantum = _body(s, raw, sigfigs)
@@ -133,7 +131,7 @@ def parse_number(text: str, *, sigfigs: int | None = None, exact: bool = False) 
     if negative:
         value = -value
     irrational = bool(FORM_PI.fullmatch(s) or FORM_ROOT.fullmatch(s))
-    return Printed(raw, value, half, is_exact, absolute, mark, quantum, irrational)
+    return Printed(raw, value, half, is_exact, absolute, quantum, irrational)
 
 
 def _body(

@@ -119,7 +119,7 @@ def _starts_number(text: str, pos: int) -> bool:
     return bool(nxt) and (nxt.isdigit() or nxt in ".π√")
 
 
-def tokenize_line(text: str, line: int = 0) -> list[Token]:
+def tokenize_line(text: str, line: int) -> list[Token]:
     """Every number token of one line of the book, left to right."""
     tokens: list[Token] = []
     pos = 0

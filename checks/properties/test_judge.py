@@ -85,7 +85,7 @@ def test_every_token_the_tokenizer_finds_is_read(numbers: list[str]) -> None:
     """A line of numbers between words: each is one token, and each token reads back as the
     value printed."""
     line = "x = " + " and ".join(numbers) + " m."
-    tokens = tokenize_line(line)
+    tokens = tokenize_line(line, 1)
     assert [t.text for t in tokens] == numbers
     assert [parse_number(t.text).value for t in tokens] == [Fraction(Decimal(n)) for n in numbers]
 
