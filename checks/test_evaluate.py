@@ -6,11 +6,11 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from types import SimpleNamespace
 from typing import Any
 
 import pytest
 
+from mechmodel.typing import Estimate, not_monotonic
 from reference import calls, tables
 from reference import evaluation as evaluate
 from reference.book import Book
@@ -40,20 +40,25 @@ def fake_model(monkeypatch: pytest.MonkeyPatch, func: Any) -> None:
 def test_a_verdict_that_changes_within_the_model_error_is_indeterminate(
     book: Book, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    fake_model(monkeypatch, lambda: SimpleNamespace(value=3.6153, error=0.002))
+    fake_model(monkeypatch, lambda: Estimate(3.6153, 0.002))
     c = claim(id="ch08.x", printed="3.62", kind="derived", expect="verified", model="towers.x")
     result = run(book, c)["ch08.x"]
     assert (result.verdict, result.model_error) == ("indeterminate", 0.002)
 
 
 def test_a_small_model_error_keeps_the_verdict(book: Book, monkeypatch: pytest.MonkeyPatch) -> None:
-    fake_model(monkeypatch, lambda: SimpleNamespace(value=3.6153, error=1e-6))
+    fake_model(monkeypatch, lambda: Estimate(3.6153, 1e-6))
     c = claim(id="ch08.x", printed="3.62", kind="derived", expect="verified", model="towers.x")
     assert run(book, c)["ch08.x"].verdict == "verified"
 
 
 def _peak(v: float) -> float:
     return 4 - (v - 2) ** 2  # a maximum at v = 2, the nominal input below
+
+
+@not_monotonic
+def _declared_peak(v: float) -> float:
+    return _peak(v)
 
 
 def _peak_claims(**extra: Any) -> tuple[Claim, Claim]:
@@ -81,12 +86,8 @@ def test_a_model_not_monotonic_gets_its_interval_from_a_grid(
     assert corners_only.interval == pytest.approx([3.9975, 3.9975])
     per_claim = run(book, *_peak_claims(monotonic=False))["ch08.top"]
     assert per_claim.interval == pytest.approx([3.9975, 4.0])
-    declared = _peak
-    declared.monotonic = False  # type: ignore[attr-defined]
-    try:
-        per_function = run(book, *_peak_claims())["ch08.top"]
-    finally:
-        del declared.monotonic  # type: ignore[attr-defined]
+    fake_model(monkeypatch, _declared_peak)
+    per_function = run(book, *_peak_claims())["ch08.top"]
     assert per_function.interval == per_claim.interval
 
 
@@ -396,7 +397,7 @@ def test_a_restatement_in_another_unit_converts_value_interval_error_and_centre(
 ) -> None:
     """A value restated in km from a claim in m: its model value, input interval, declared
     error and centre are all in km."""
-    fake_model(monkeypatch, lambda v: SimpleNamespace(value=1500 * v + 500, error=0.002))
+    fake_model(monkeypatch, lambda v: Estimate(1500 * v + 500, 0.002))
     metres = claim(
         id="ch08.m",
         printed="3650",
@@ -420,7 +421,7 @@ def test_a_model_error_restated_in_another_unit_is_converted(
     book: Book, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """3615.3 m +- 2 mm: the restated "3.62" km is verified, 2e-6 km changing nothing."""
-    fake_model(monkeypatch, lambda: SimpleNamespace(value=3615.3, error=0.002))
+    fake_model(monkeypatch, lambda: Estimate(3615.3, 0.002))
     metres = claim(
         id="ch08.m", printed="3615", unit="m", kind="derived", expect="verified", model="towers.x"
     )
@@ -626,7 +627,7 @@ def test_a_model_error_is_converted_to_the_printed_unit(
 ) -> None:
     """A model in SI declares 1 cm of error on 3615.3 m: printed in km that is 1e-5 km, which
     leaves "3.62" verified."""
-    fake_model(monkeypatch, lambda: SimpleNamespace(value=3615.3, error=0.01))
+    fake_model(monkeypatch, lambda: Estimate(3615.3, 0.01))
     c = claim(
         id="ch08.km", printed="3.62", unit="km", kind="derived", expect="verified", model="t.x"
     )

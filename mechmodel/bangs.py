@@ -26,6 +26,7 @@ from typing import Any, Literal
 from mechmodel import inputs
 from mechmodel.collisions import collide
 from mechmodel.ellipse import energy_ellipse as energy_ellipse  # the catalog names bangs.*
+from mechmodel.typing import not_monotonic
 
 BangKind = Literal["01", "12", "02"]
 FLOOR, BALLS, CEILING = "01", "12", "02"
@@ -398,6 +399,7 @@ def _angles(m1: Any, m2: Any, v1: Any, v2: Any, *, precise: bool) -> tuple[Any, 
     return math.atan(math.sqrt(m2 / m1)), math.atan2(v2 * math.sqrt(m2), v1 * math.sqrt(m1))
 
 
+@not_monotonic
 def bang_count(m1: Any, m2: Any, v1: Any, v2: Any) -> BangCount:
     """How many bangs ``ceiling_sequence`` makes, in O(1): no bang is simulated.
 
@@ -430,9 +432,6 @@ def bang_count(m1: Any, m2: Any, v1: Any, v2: Any) -> BangCount:
     balls = sum(b.kind == BALLS for b in sequence.bangs)
     first = sequence.bangs[0].kind if sequence.bangs else None
     return BangCount(balls, sequence.count - balls, first)
-
-
-bang_count.monotonic = False  # type: ignore[attr-defined]  # a count jumps
 
 
 def _exact(x: Any) -> Any:
@@ -512,6 +511,7 @@ def velocities_after_bang(m1: Any, m2: Any, v1: Any, v2: Any, bang: int) -> tupl
     return states[n - 1]
 
 
+@not_monotonic
 def game_over_bang(m1: Any, m2: Any, v1: Any, v2: Any) -> int:
     """The number of the last bang of Fig. 5.1's sequence, counting the floor bounce as Bang-1.
 
@@ -519,9 +519,6 @@ def game_over_bang(m1: Any, m2: Any, v1: Any, v2: Any) -> int:
     the 'game-over' point of Exercise 1.5.1.
     """
     return 1 + ceiling_sequence(m1, m2, v1, v2).count
-
-
-game_over_bang.monotonic = False  # type: ignore[attr-defined]  # a count jumps
 
 
 def bangs_in_chain(double_bangs: int, floor_bounces: int = 1) -> int:
@@ -602,6 +599,7 @@ class History:
         return y1 + v1 * (t - t0), y2 + v2 * (t - t0)
 
 
+@not_monotonic
 def bang_history(
     m1: Any,
     m2: Any,
@@ -671,6 +669,3 @@ def bang_history(
             b, w = ceiling, ceiling_bounce(w)
         bangs.append(Event(len(bangs) + 1, kind, t, a, b, u, w))
     return History((m1, m2), (y1, y2, v1, v2), tuple(bangs), False)
-
-
-bang_history.monotonic = False  # type: ignore[attr-defined]  # the order of bangs can change

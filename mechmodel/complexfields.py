@@ -14,7 +14,7 @@ Three kinds of computation:
   factors 1/2 are computed, never written in. Results are exact ``Fraction`` or ``int``.
 - **Numerical contour integration** (trapezoid rule on a circle, mpmath at 30 digits) for loop
   integrals, Laurent coefficients and Cauchy's formulas (10.39), (10.44)-(10.45). Such results
-  are ``Numeric`` values carrying their own error estimate: the difference between the rule
+  are ``Estimate`` values carrying their own error estimate: the difference between the rule
   with N and N/2 points plus a rounding bound.
 - **Geometry** of line sources, multipoles and the stereographic map (Figs. 10.9-10.16), in
   floats.
@@ -35,6 +35,7 @@ import numpy as np
 
 from mechmodel import inputs
 from mechmodel.algebra import I_UNIT, Gaussian, Laurent
+from mechmodel.typing import Estimate
 
 # -------------------------------------------------------------------------------------------
 # Polynomials in x, y and in z, z* (the exact algebra is mechmodel.algebra)
@@ -464,23 +465,12 @@ LAURENT_POINTS = 32  # exact for the degree range of the test Laurent series bel
 
 
 @dataclass(frozen=True)
-class Numeric:
-    """A numerically computed real value and a bound on its numerical error."""
-
-    value: float
-    error: float
-
-    def __float__(self) -> float:
-        return self.value
-
-
-@dataclass(frozen=True)
 class LoopIntegral:
     """A loop integral of f(z) dz counterclockwise around a circle (10.37): ``imag`` counts the
     real source (flux), ``real`` the imaginary source (vorticity, work around the loop)."""
 
-    real: Numeric
-    imag: Numeric
+    real: Estimate
+    imag: Estimate
 
 
 @cache
@@ -523,7 +513,7 @@ def _float_contour(
 
 def _numeric_parts(value: Any, error: Any) -> LoopIntegral:
     err = float(error)
-    return LoopIntegral(Numeric(float(value.real), err), Numeric(float(value.imag), err))
+    return LoopIntegral(Estimate(float(value.real), err), Estimate(float(value.imag), err))
 
 
 def power_loop_integral(
@@ -567,7 +557,7 @@ def laurent_loop_integral(
         return sum((a * z**k for a, k in coeffs), start=np.zeros_like(z))
 
     value, error = _float_contour(f, c, r, points)
-    return LoopIntegral(Numeric(value.real, error), Numeric(value.imag, error))
+    return LoopIntegral(Estimate(value.real, error), Estimate(value.imag, error))
 
 
 @dataclass(frozen=True)
@@ -579,8 +569,8 @@ class LineSource:
 
     star_numerator_re: float
     star_numerator_im: float
-    flux: Numeric
-    circulation: Numeric
+    flux: Estimate
+    circulation: Estimate
 
 
 def line_source(strength_re: Any = 1, strength_im: Any = 0) -> LineSource:
@@ -631,8 +621,8 @@ class LaurentCoefficientCheck:
 
     index: int
     weight_power: int
-    two_pi: Numeric
-    residual: Numeric
+    two_pi: Estimate
+    residual: Estimate
 
 
 def laurent_coefficient_check(index: Any) -> LaurentCoefficientCheck:
@@ -657,7 +647,7 @@ def laurent_coefficient_check(index: Any) -> LaurentCoefficientCheck:
         ratio = value / mpmath.mpc(coeffs[n])
         err = float(error / abs(mpmath.mpc(coeffs[n])))
     return LaurentCoefficientCheck(
-        n, weight, Numeric(float(ratio.imag), err), Numeric(float(ratio.real), err)
+        n, weight, Estimate(float(ratio.imag), err), Estimate(float(ratio.real), err)
     )
 
 
@@ -689,9 +679,9 @@ class CauchyDerivative:
     ``taylor_numerator`` = Re(a_n n! / f^(n)(a)) with a_n = I/(2 pi i) (the 1 of 1/n!)."""
 
     order: int
-    two_pi: Numeric
-    numerator: Numeric
-    taylor_numerator: Numeric
+    two_pi: Estimate
+    numerator: Estimate
+    taylor_numerator: Estimate
 
 
 def cauchy_derivative(order: Any) -> CauchyDerivative:
@@ -706,9 +696,9 @@ def cauchy_derivative(order: Any) -> CauchyDerivative:
         taylor = (value / two_pi_i) * mpmath.factorial(n) / exact
         return CauchyDerivative(
             n,
-            Numeric(float(k.imag), float(abs(k) * rel)),
-            Numeric(float(numerator.real), float(abs(numerator) * rel)),
-            Numeric(float(taylor.real), float(abs(taylor) * rel)),
+            Estimate(float(k.imag), float(abs(k) * rel)),
+            Estimate(float(numerator.real), float(abs(numerator) * rel)),
+            Estimate(float(taylor.real), float(abs(taylor) * rel)),
         )
 
 
@@ -809,7 +799,7 @@ def quadrupole_relations() -> QuadrupoleRelations:
     )
 
 
-def level_line_angle(field_power: Any, x: Any = 7 / 10, y: Any = 4 / 10) -> Numeric:
+def level_line_angle(field_power: Any, x: Any = 7 / 10, y: Any = 4 / 10) -> Estimate:
     """Angle (radians) between the level lines of Phi and of A of the potential of z^n at
     (x, y), from central differences of phi; 90 degrees for every analytic potential
     (Cauchy-Riemann), Fig. 10.13. Error: the O(h^2) difference error."""
@@ -830,7 +820,7 @@ def level_line_angle(field_power: Any, x: Any = 7 / 10, y: Any = 4 / 10) -> Nume
     gp = grad(lambda z: phi(z).real)
     ga = grad(lambda z: phi(z).imag)
     cos_angle = (gp[0] * ga[0] + gp[1] * ga[1]) / (math.hypot(*gp) * math.hypot(*ga))
-    return Numeric(math.acos(max(-1.0, min(1.0, cos_angle))), 10.0**-6)
+    return Estimate(math.acos(max(-1.0, min(1.0, cos_angle))), 10.0**-6)
 
 
 @dataclass(frozen=True)

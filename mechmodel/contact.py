@@ -27,6 +27,7 @@ from typing import Any
 from mechmodel import inputs
 from mechmodel.algebra import polynomial_derivative, polynomial_integral
 from mechmodel.numeric import complex_step_derivative
+from mechmodel.typing import Estimate
 
 # --- the dent: Fig. 7.1, (7.1)-(7.4) ---------------------------------------------------------
 
@@ -344,17 +345,6 @@ def quadratic_potential(a: Any, b: Any, y: Any) -> Any:
 
 
 # --- the soft-contact integrator: Figs. 7.5-7.7, 8.1 -----------------------------------------
-
-
-@dataclass(frozen=True)
-class Estimate:
-    """A number from a numerical integration and its error bound (the evaluator reads both)."""
-
-    value: float
-    error: float
-
-    def __float__(self) -> float:
-        return float(self.value)
 
 
 @dataclass(frozen=True)

@@ -34,6 +34,7 @@ from mechmodel.planar import (
     rotation,
 )
 from mechmodel.planar import hypotenuse as hypotenuse  # the catalog's operators.hypotenuse
+from mechmodel.typing import not_monotonic
 
 
 # -- multiples of the unit matrix (p. 5.15) ---------------------------------------------------
@@ -153,6 +154,7 @@ def mass_scaled_form(m1: Any, m2: Any, n: int = 1) -> MassScaledForm:
     return MassScaledForm(big[0][0], s, v[0][1] / s, v[1][0] / s)
 
 
+@not_monotonic
 def rotation_picture_bang_count(m1: Any, m2: Any) -> int:
     """Bangs after the floor bounce (v0, -v0) until none can occur, from the rotation picture.
 
@@ -168,9 +170,6 @@ def rotation_picture_bang_count(m1: Any, m2: Any) -> int:
     while n > 0 and (n + 1) * beta >= math.pi:
         n -= 1
     return n
-
-
-rotation_picture_bang_count.monotonic = False  # type: ignore[attr-defined]  # a count jumps
 
 
 # -- reflections, rotations and mirrors (5.15)-(5.18) -----------------------------------------

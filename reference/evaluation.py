@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 import sympy
 
+from mechmodel.typing import Estimate, is_monotonic
 from reference.book import Book, book_path, chapter_keys, load_book
 from reference.calls import (
     MAX_ROUNDED_INPUTS,
@@ -37,7 +38,7 @@ from reference.compare import Context, Edition, Judgement, Verdict, exact, insid
 from reference.diagnose import diagnose
 from reference.errata import Error, errors
 from reference.formulas import FormulaError, compare, generic_points, make_symbol, parse_formula
-from reference.models import PickError, follow, is_monotonic, resolve
+from reference.models import PickError, follow, resolve
 from reference.numbers import EXACT_ULPS, Printed, parse_number, significant_digits
 from reference.power import (
     Outcome,
@@ -340,7 +341,7 @@ class _Evaluator:
         assert claim.model is not None
         raw = self.cache.picked(claim.id, claim.model, args, claim.pick)
         error = None
-        if hasattr(raw, "value") and hasattr(raw, "error"):
+        if isinstance(raw, Estimate):
             raw, error = raw.value, raw.error
         factor = unit_factor(claim.unit)
         converted = self._convert(claim, raw, factor)

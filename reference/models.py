@@ -3,8 +3,8 @@
 A claim's ``model`` is ``module.function`` inside ``mechmodel``. Its result may be a number, a
 sequence or a dataclass; ``pick`` is a path of names and ``[index]`` into it ("velocities[2]",
 "bangs[10].v1"); empty for a scalar. A model declares facts about itself with attributes the
-evaluator reads: ``monotonic = False`` (no input interval over a box of roundings), and a result
-with ``value`` and ``error`` attributes carries its own numerical error.
+evaluator reads through ``mechmodel.typing``: ``@not_monotonic`` (no input interval over a box of
+roundings), and an ``Estimate`` result carries its own numerical error.
 """
 
 from __future__ import annotations
@@ -80,8 +80,3 @@ def follow(result: Any, path: str) -> Any:
         except (AttributeError, IndexError, KeyError, TypeError) as err:
             raise PickError(f"pick {path!r}: no {step!r} in {type(value).__name__}") from err
     return value
-
-
-def is_monotonic(func: Callable[..., Any]) -> bool:
-    """False where the model declares its result is not monotonic in its inputs."""
-    return getattr(func, "monotonic", True) is not False

@@ -1,0 +1,78 @@
+"""What mechmodel's functions take and return: type aliases, ``Estimate``, ``@not_monotonic``.
+
+The evaluator calls a model with the numbers of the catalog: ``int`` and ``Fraction`` for a
+printed number read exactly (design 3a), ``float`` for one read as a rounded decimal, ``complex``
+for the fields of chapter 10, and, for a formula claim (design 2a), sympy symbols. The aliases
+say which of these a function accepts:
+
+- ``Exact``: an exact rational, ``int`` or ``Fraction``; + - * / keep it exact.
+- ``Real``: a real number, ``Exact`` or ``float`` (numpy's float64 is a float).
+- ``Scalar``: a ``Real`` or a ``complex`` number.
+- ``Symbolic``: a ``Real`` or a sympy expression: a function written with plain operators,
+  which a formula claim calls with sympy symbols and compares with the book's formula.
+- ``Vector`` and ``Matrix``: a list of numbers (velocities of n balls, a state) and a list of
+  rows (a collision or bang matrix); the plane's fixed pairs are ``planar.Vector`` and
+  ``planar.Matrix``.
+
+A numerical model (an ODE run, a contour integral) returns an ``Estimate``: its value and a
+bound on its numerical error, both read by the evaluator. A model whose result is not monotonic
+in its inputs (a count that jumps) is marked ``@not_monotonic``: the evaluator then brackets a
+claim's rounded inputs on a grid, not at the corners of their box (design 3a).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import TYPE_CHECKING, Any, TypeAlias, TypeVar
+
+if TYPE_CHECKING:
+    import sympy
+
+__all__ = [
+    "Estimate",
+    "Exact",
+    "Matrix",
+    "Real",
+    "Scalar",
+    "Symbolic",
+    "Vector",
+    "is_monotonic",
+    "not_monotonic",
+]
+
+Exact: TypeAlias = int | Fraction
+Real: TypeAlias = float | int | Fraction
+Scalar: TypeAlias = Real | complex
+Symbolic: TypeAlias = "Real | sympy.Expr"
+Vector: TypeAlias = Sequence[Real]
+Matrix: TypeAlias = Sequence[Sequence[Real]]
+
+F = TypeVar("F", bound=Callable[..., Any])
+
+_MONOTONIC = "monotonic"  # the attribute @not_monotonic sets; read only by is_monotonic
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """A numerically computed real value and a bound on its numerical error, in the value's
+    unit (an ODE run's tolerance-halving difference, a quadrature rule against a coarser one)."""
+
+    value: float
+    error: float
+
+    def __float__(self) -> float:
+        return float(self.value)
+
+
+def not_monotonic(func: F) -> F:
+    """Mark ``func`` as not monotonic in its inputs (a count of bangs jumps as a mass ratio
+    crosses a threshold): no interval follows from the corners of a box of rounded inputs."""
+    setattr(func, _MONOTONIC, False)
+    return func
+
+
+def is_monotonic(func: Callable[..., Any]) -> bool:
+    """False for a function marked ``@not_monotonic``, else True."""
+    return getattr(func, _MONOTONIC, True) is not False
