@@ -14,14 +14,14 @@ import cmath
 import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
 from mechmodel import inputs
+from mechmodel.typing import Matrix, Real, Vector
 
 
-def action_sum(legs: Sequence[Any]) -> Any:
+def action_sum(legs: Vector) -> Real:
     """Action accumulated along a path made of legs, J s: the sum of the legs' actions (Fig.
     12.12: 10 to the first wave front and 10 more to the wavelet around it make 20)."""
     return sum(inputs.real(a, "action") for a in legs)
@@ -41,13 +41,13 @@ def phase_turn() -> float:
     return 2 * cmath.phase(-1)
 
 
-def bohr_phase(quantum_number: Any) -> float:
+def bohr_phase(quantum_number: int) -> float:
     """Phase S_H/hbar of a Bohr-quantized closed loop, 2 pi upsilon (12.45)."""
     n = inputs.count(quantum_number, "quantum_number")
     return phase_turn() * n
 
 
-def phase_factor(angle: Any) -> complex:
+def phase_factor(angle: Real) -> complex:
     """The quantum phase factor e^(i angle) (12.42c); 1 after a whole number of turns (12.45)."""
     return cmath.exp(1j * inputs.real(angle, "angle"))
 
@@ -58,13 +58,13 @@ class PhaseFactorParts:
     imag: float
 
 
-def phase_factor_parts(angle: Any) -> PhaseFactorParts:
+def phase_factor_parts(angle: Real) -> PhaseFactorParts:
     """Real and imaginary parts of e^(i angle): the standing-wave amplitude of a phase."""
     z = phase_factor(angle)
     return PhaseFactorParts(real=z.real, imag=z.imag)
 
 
-def palette_phase(step: Any, colours: Any) -> float:
+def palette_phase(step: int, colours: int) -> float:
     """Phase angle of hue ``step`` on a colour circle of ``colours`` equal hues:
     2 pi step / colours (line 16324: eight hues from red at 0 through pi/4 steps)."""
     k = inputs.count(step, "step")
@@ -72,7 +72,7 @@ def palette_phase(step: Any, colours: Any) -> float:
     return phase_turn() * k / n
 
 
-def palette_amplitude(step: Any, colours: Any) -> float:
+def palette_amplitude(step: int, colours: int) -> float:
     """Real standing-wave amplitude cos(phase) of hue ``step`` (red 1, cyan -1: line 16340)."""
     return phase_factor_parts(palette_phase(step, colours)).real
 
@@ -121,7 +121,7 @@ def oscillator_paths(
     return OscillatorPaths(times=t, x=np.array(xs), y=np.array(ys), action=np.array(acts))
 
 
-def common_speed(velocities: Sequence[Sequence[Any]]) -> float:
+def common_speed(velocities: Matrix) -> float:
     """The speed |v| shared by all the listed velocity vectors (exercise 1.12.3: fragments
     flying off with one speed in various directions); ``ValueError`` if they differ."""
     speeds = [math.hypot(*(float(inputs.real(c, "component")) for c in v)) for v in velocities]
@@ -132,9 +132,7 @@ def common_speed(velocities: Sequence[Sequence[Any]]) -> float:
     return sum(speeds) / len(speeds)
 
 
-def turning_sequence(
-    first: Sequence[Any], second: Sequence[Any], index: Any
-) -> tuple[float, float]:
+def turning_sequence(first: Vector, second: Vector, index: int) -> tuple[float, float]:
     """The plane vector number ``index`` (0 for ``first``) of the sequence that starts with
     ``first`` and ``second`` and turns (and scales) each next vector from the last as
     ``second`` is turned from ``first``: first * (second / first)^index as complex numbers

@@ -13,14 +13,15 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy
+from mechmodel.lagrange._common import _rational
+from mechmodel.typing import Matrix, Real, Symbolic, Vector
 
 
-def coordinate_differential(start: Any, end: Any) -> Any:
+def coordinate_differential(start: Real, end: Real) -> Real:
     """The differential dq = q_end - q_start between two labelled coordinate lines of a cell
     (Fig. 12.10: the cell between q1 = 100 and q1 = 101 has dq1 = 1). Exact for ``int``."""
     inputs.real(start, "start")
@@ -37,17 +38,22 @@ class QuadraticExtremum:
     point: Fraction
 
 
-def quadratic_extremum(linear_coefficient: Any) -> QuadraticExtremum:
+def quadratic_extremum(linear_coefficient: Real) -> QuadraticExtremum:
     """dS/dq of S = q^2 + b q by the power rule, and the q where it vanishes (line 15832:
     S = q^2 - 4q gives dS/dq = 2q - 4, zero at q = 2). Exact."""
     b = Fraction(inputs.real(linear_coefficient, "linear_coefficient"))
     q = Laurent.var("q")
     derivative = (q**2 + b * q).diff("q")
-    slope, constant = derivative.part("q", 1).only_coefficient(), derivative.part("q", 0).value()
+    slope, constant = (
+        _rational(derivative.part("q", 1).only_coefficient()),
+        _rational(derivative.part("q", 0).value()),
+    )
     return QuadraticExtremum(slope=slope, constant=constant, point=-constant / slope)
 
 
-def gradient_potential(matrix: Sequence[Sequence[Any]], vector: Sequence[Any]) -> Any:
+def gradient_potential(
+    matrix: Sequence[Sequence[Symbolic]], vector: Sequence[Symbolic]
+) -> Symbolic:
     """The scalar F(v) whose gradient dF/dv^j is M_ij v^i, with F(0) = 0, for a symmetric
     matrix M (line 15022): by the line integral F(v) = integral_0^1 (M.(t v)).v dt, done
     exactly in t. Its q-derivative dF/dq is M_ij v^i dv^j/dq, the step from (12.24) to
@@ -73,16 +79,16 @@ def gradient_potential(matrix: Sequence[Sequence[Any]], vector: Sequence[Any]) -
         Laurent(),
     )
     form = field_dot_v.integrate("t").substitute("t", 1)
-    total: Any = 0
+    total: Symbolic = 0
     for key, c in form.terms.items():  # the Fraction times the values: exact where they are
-        term: Any = c
+        term: Symbolic = c
         for name, e in key:
             term = term * names[name] ** e
         total = total + term
     return total
 
 
-def metric_kinetic_energy(mass: Any, metric: Sequence[Sequence[Any]], rates: Sequence[Any]) -> Any:
+def metric_kinetic_energy(mass: Real, metric: Matrix, rates: Vector) -> Real:
     """Kinetic energy of one particle moving at the generalized velocities q' in coordinates
     of covariant metric g (12.31), J or scaled: any Jacobian J with J^T J = g gives the same
     Cartesian speed, so take the Cholesky factor of g (upper triangular, positive diagonal),
@@ -114,9 +120,9 @@ class CoordinateHamiltonian:
     """H = p q' - L (12.36a) of L = M g q'^2/2 - U in one generalized coordinate of metric g,
     with the rate q' and the momentum p = dL/dq' (12.25e) that go with it."""
 
-    rate: Any
-    momentum: Any
-    hamiltonian: Any
+    rate: Real
+    momentum: Real
+    hamiltonian: Real
 
 
 def _coordinate_lagrangian() -> Laurent:
@@ -125,7 +131,9 @@ def _coordinate_lagrangian() -> Laurent:
     return m * g * qd**2 / 2 - u
 
 
-def hamiltonian_of_rate(mass: Any, metric: Any, rate: Any, potential: Any) -> CoordinateHamiltonian:
+def hamiltonian_of_rate(
+    mass: Real, metric: Real, rate: Real, potential: Real
+) -> CoordinateHamiltonian:
     """H = p q' - L (12.36a) at the rate q' (12.37a-b): p = dL/dq' by differentiating L
     exactly, then the Legendre form evaluated. Exact for ``int`` and ``Fraction``."""
     inputs.mass(mass)
@@ -140,7 +148,7 @@ def hamiltonian_of_rate(mass: Any, metric: Any, rate: Any, potential: Any) -> Co
 
 
 def hamiltonian_of_momentum(
-    mass: Any, inverse_metric: Any, momentum: Any, potential: Any
+    mass: Real, inverse_metric: Real, momentum: Real, potential: Real
 ) -> CoordinateHamiltonian:
     """H = p q' - L (12.37c) at the momentum p, for the coordinate whose contravariant metric
     is g^11 = ``inverse_metric`` (so g = 1/g^11): p = dL/dq' is linear in q', so q' is p over
@@ -162,7 +170,7 @@ def hamiltonian_of_momentum(
     )
 
 
-def quadratic_function_slope(point: Any, linear_coefficient: Any) -> Any:
+def quadratic_function_slope(point: Real, linear_coefficient: Real) -> Real:
     """dS/dq at q of S(q) = q^2 + b q (line 15832: S = q^2 - 4q), by the power rule on the
     exact polynomial, evaluated at ``point``. Exact for ``int`` and ``Fraction``."""
     b = Fraction(inputs.real(linear_coefficient, "linear_coefficient"))

@@ -11,19 +11,18 @@ ellipses (Fig. 12.2). SI units (kg, m/s, kg m/s, J) or the book's scaled units. 
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy, momentum_radius, velocity_radius
 from mechmodel.exact import exact_sqrt
-from mechmodel.lagrange._common import _power, _same_length, _sqrt
+from mechmodel.lagrange._common import _abs, _power, _same_length, _sqrt
+from mechmodel.typing import Real, Vector
 
 
-def quasi_velocities(masses: Sequence[Any], velocities: Sequence[Any]) -> list[Any]:
+def quasi_velocities(masses: Vector, velocities: Vector) -> list[Real]:
     """Mass-scaled velocities V_k = sqrt(m_k) v_k (12.1), the coordinates in which the energy
     ellipse is a circle (Fig. 12.1b); kg^(1/2) m/s."""
     _same_length(masses, velocities)
@@ -33,7 +32,7 @@ def quasi_velocities(masses: Sequence[Any], velocities: Sequence[Any]) -> list[A
     ]
 
 
-def momenta(masses: Sequence[Any], velocities: Sequence[Any]) -> list[Any]:
+def momenta(masses: Vector, velocities: Vector) -> list[Real]:
     """Momenta p_k = m_k v_k (12.2), kg m/s. Exact for ``int`` and ``Fraction``."""
     _same_length(masses, velocities)
     return [
@@ -41,12 +40,12 @@ def momenta(masses: Sequence[Any], velocities: Sequence[Any]) -> list[Any]:
     ]
 
 
-def estrangian(quasi: Sequence[Any]) -> Any:
+def estrangian(quasi: Vector) -> Real:
     """E(V) = sum_k V_k^2 / 2 (12.5): the kinetic energy as a function of V."""
     return sum(inputs.real(x, "V") ** 2 for x in quasi) / 2
 
 
-def hamiltonian_free(masses: Sequence[Any], momenta_: Sequence[Any]) -> Any:
+def hamiltonian_free(masses: Vector, momenta_: Vector) -> Real:
     """H(p) = sum_k p_k^2 / (2 m_k) (12.4): the kinetic energy as a function of momenta."""
     _same_length(masses, momenta_)
     return (
@@ -78,9 +77,7 @@ def root_mass_powers() -> RootMassPowers:
     return RootMassPowers(momentum=to_momentum, velocity=to_velocity)
 
 
-def scaled_coordinate_energy(
-    masses: Sequence[Any], coordinates: Sequence[Any], scale_power: Any
-) -> Any:
+def scaled_coordinate_energy(masses: Vector, coordinates: Vector, scale_power: Real) -> Real:
     """The kinetic energy of bodies given by their mass-scaled coordinates u_k = m_k^s v_k:
     each velocity is recovered as v_k = u_k m_k^-s and put into L(v) = sum m_k v_k^2/2 (12.3).
     s = 1/2 gives the energy in the quasi-velocities V (12.1), s = 1 in the momenta p (12.2).
@@ -102,11 +99,11 @@ class RootMassMaps:
     velocity maps to (the mass M) and the velocity v that a unit momentum maps back to
     (the inverse mass M^-1)."""
 
-    mass: Any
-    inverse_mass: Any
+    mass: Real
+    inverse_mass: Real
 
 
-def root_mass_maps(root_mass: Any) -> RootMassMaps:
+def root_mass_maps(root_mass: Real) -> RootMassMaps:
     """Compose the root-mass scalings of (12.9) map by map: forward V = R v and p = R V, so a
     unit velocity becomes the momentum R (R 1); back V = p / R and v = V / R, so a unit
     momentum becomes the velocity (1 / R) / R. Exact for ``int`` and ``Fraction``."""
@@ -129,21 +126,21 @@ class EllipseSlopes:
     (Hamiltonian) coordinates. ``*_steepness`` is the magnitude of the collision-line slope
     (the slope triangle drawn on that line)."""
 
-    mass_ratio: Any
-    velocity_collision: Any
-    velocity_tangent: Any
-    velocity_bisector: Any
-    quasi_collision: Any
-    quasi_tangent: Any
-    quasi_bisector: Any
-    quasi_steepness: Any
-    momentum_collision: Any
-    momentum_tangent: Any
-    momentum_bisector: Any
-    momentum_steepness: Any
+    mass_ratio: Real
+    velocity_collision: Real
+    velocity_tangent: Real
+    velocity_bisector: Real
+    quasi_collision: Real
+    quasi_tangent: Real
+    quasi_bisector: Real
+    quasi_steepness: Real
+    momentum_collision: Real
+    momentum_tangent: Real
+    momentum_bisector: Real
+    momentum_steepness: Real
 
 
-def ke_ellipse_slopes(collision_slope: Any) -> EllipseSlopes:
+def ke_ellipse_slopes(collision_slope: Real) -> EllipseSlopes:
     """The slopes of Fig. 12.1 from the slope -m1/m2 of the collision line in the v1-v2 plane.
 
     A collision keeps m1 v1 + m2 v2, so it moves (v1, v2) along (m2, -m1); the COM bisector is
@@ -158,10 +155,10 @@ def ke_ellipse_slopes(collision_slope: Any) -> EllipseSlopes:
     m1, m2 = (Fraction(ratio), Fraction(1)) if exact else (ratio, 1.0)
     r1, r2 = exact_sqrt(m1), exact_sqrt(m2)
 
-    def slope(dx: Any, dy: Any) -> Any:
+    def slope(dx: Real, dy: Real) -> Real:
         return dy / dx
 
-    def tangent(grad: tuple[Any, Any]) -> Any:
+    def tangent(grad: tuple[Real, Real]) -> Real:
         return slope(grad[1], -grad[0])  # the direction (g2, -g1) is normal to (g1, g2)
 
     collision_v = (m2, -m1)
@@ -181,11 +178,11 @@ def ke_ellipse_slopes(collision_slope: Any) -> EllipseSlopes:
         quasi_collision=quasi_collision,
         quasi_tangent=tangent(com_quasi),
         quasi_bisector=slope(r1 * bisector_v[0], r2 * bisector_v[1]),
-        quasi_steepness=abs(quasi_collision),
+        quasi_steepness=_abs(quasi_collision),
         momentum_collision=momentum_collision,
         momentum_tangent=tangent(grad_h),
         momentum_bisector=slope(m1 * bisector_v[0], m2 * bisector_v[1]),
-        momentum_steepness=abs(momentum_collision),
+        momentum_steepness=_abs(momentum_collision),
     )
 
 
@@ -194,11 +191,11 @@ class EllipseRadii:
     """Semi-axes of the energy ellipses L(v) = E (velocity radii sqrt(2E/m_k)) and H(p) = E
     (momentum radii sqrt(2 E m_k)), Fig. 12.2."""
 
-    velocity: list[Any]
-    momentum: list[Any]
+    velocity: list[Real]
+    momentum: list[Real]
 
 
-def energy_ellipse_radii(masses: Sequence[Any], energy: Any) -> EllipseRadii:
+def energy_ellipse_radii(masses: Vector, energy: Real) -> EllipseRadii:
     """Radii of the L and H ellipses of energy E (Fig. 12.2): L(v) = sum m v^2/2 = E meets the
     v_k axis at sqrt(2E/m_k), H(p) = sum p^2/(2m) = E the p_k axis at sqrt(2E m_k); for each
     axis the H radius is m_k times the L radius."""
@@ -210,7 +207,7 @@ def energy_ellipse_radii(masses: Sequence[Any], energy: Any) -> EllipseRadii:
     )
 
 
-def ellipse_radius_ratio(mass: Any, energy: Any = 1) -> Any:
+def ellipse_radius_ratio(mass: Real, energy: Real = 1) -> Real:
     """Ratio of the L(v)-ellipse radius to the H(p)-ellipse radius on one axis for a body of
     mass ``mass`` (Fig. 12.2(d)-(e), where the mass is s times the unit mass): the two radii of
     ``energy_ellipse_radii`` divided, sqrt(2E/m)/sqrt(2Em). Independent of the energy."""

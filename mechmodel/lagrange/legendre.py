@@ -11,12 +11,13 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy
+from mechmodel.lagrange._common import _rational
 from mechmodel.lagrange.energies import hamiltonian_free
+from mechmodel.typing import Real
 
 
 @dataclass(frozen=True)
@@ -24,12 +25,12 @@ class QuadraticLegendrePair:
     """The quadratic kinetic energy of one body as L(v) and as H(p), at a velocity v and the
     momentum p it maps to (line 13716): its mass, L and H."""
 
-    mass: Any
-    lagrangian: Any
-    hamiltonian: Any
+    mass: Real
+    lagrangian: Real
+    hamiltonian: Real
 
 
-def quadratic_legendre_pair(velocity: Any, momentum: Any) -> QuadraticLegendrePair:
+def quadratic_legendre_pair(velocity: Real, momentum: Real) -> QuadraticLegendrePair:
     """L and H of the quadratic kinetic energy whose slope dL/dv at ``velocity`` is
     ``momentum``: p = dL/dv = m v (12.10a) fixes the mass m = p / v; then L = m v^2/2 (12.3)
     and H = p^2/(2m) (12.4). Numerically L = H = p v/2 (line 13716) while H = p v - L
@@ -53,11 +54,11 @@ class LegendreTangent:
     ``transform`` = s x - f, the Legendre transform (12.11); ``intercept`` = f - s x, where the
     tangent meets the axis x = 0 (minus the transform)."""
 
-    transform: Any
-    intercept: Any
+    transform: Real
+    intercept: Real
 
 
-def legendre_tangent(value: Any, slope: Any, point: Any) -> LegendreTangent:
+def legendre_tangent(value: Real, slope: Real, point: Real) -> LegendreTangent:
     """Legendre geometry of Fig. 12.3: the tangent to L(v) at v (slope p, value L) meets the
     L axis at L - p v = -H, so H(p) = p v - L(v) (12.11b); the same with H(p), slope v and
     point p gives -L (12.11a). Exact for ``int`` and ``Fraction``."""
@@ -85,7 +86,8 @@ def legendre_stationarity() -> LegendreStationarity:
     h_of_v = (p * v - lagrangian).diff("v").substitute("v", hamiltonian.diff("p"))
     l_of_p = (p * v - hamiltonian).diff("p").substitute("p", lagrangian.diff("v"))
     return LegendreStationarity(
-        hamiltonian_velocity_slope=h_of_v.value(), lagrangian_momentum_slope=l_of_p.value()
+        hamiltonian_velocity_slope=_rational(h_of_v.value()),
+        lagrangian_momentum_slope=_rational(l_of_p.value()),
     )
 
 

@@ -15,16 +15,16 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy
-from mechmodel.lagrange._common import _lib
+from mechmodel.lagrange._common import _lib, _rational
 from mechmodel.lagrange.calculus import angle_derivative, time_derivative
+from mechmodel.typing import Real, Vector
 
 
-def polar_jacobian(r: Any, phi: Any) -> list[list[Any]]:
+def polar_jacobian(r: Real, phi: Real) -> list[list[Real]]:
     """Jacobian J[j][m] = dx^j/dq^m of x = r cos phi, y = r sin phi (12.26); its columns are the
     covariant bases E_r, E_phi."""
     inputs.real(r, "r")
@@ -33,7 +33,7 @@ def polar_jacobian(r: Any, phi: Any) -> list[list[Any]]:
     return [[c, -r * s], [s, r * c]]
 
 
-def polar_kajobian(r: Any, phi: Any) -> list[list[Any]]:
+def polar_kajobian(r: Real, phi: Real) -> list[list[Real]]:
     """The inverse ("Kajobian") K[m][j] = dq^m/dx^j of the polar Jacobian (12.26); its rows
     are the contravariant bases E^r, E^phi. ``ValueError`` at the origin."""
     inputs.real(r, "r")
@@ -44,13 +44,13 @@ def polar_kajobian(r: Any, phi: Any) -> list[list[Any]]:
     return [[c, s], [-s / r, c / r]]
 
 
-def polar_metric(r: Any, phi: Any = 0) -> list[list[Any]]:
+def polar_metric(r: Real, phi: Real = 0) -> list[list[Real]]:
     """Covariant metric g_mn = E_m . E_n = (J^T J)_mn of polar coordinates (12.30b)."""
     j = polar_jacobian(r, phi)
     return [[sum(j[k][m] * j[k][n] for k in range(2)) for n in range(2)] for m in range(2)]
 
 
-def polar_inverse_metric(r: Any, phi: Any = 0) -> list[list[Any]]:
+def polar_inverse_metric(r: Real, phi: Real = 0) -> list[list[Real]]:
     """Contravariant metric g^mn = E^m . E^n = (K K^T)^mn of polar coordinates (12.30c)."""
     k = polar_kajobian(r, phi)
     return [[sum(k[m][j] * k[n][j] for j in range(2)) for n in range(2)] for m in range(2)]
@@ -148,25 +148,25 @@ def polar_mechanics() -> PolarMechanics:
     p_phi_rate = time_derivative(p_phi, _POLAR_RATES)
     return PolarMechanics(
         jacobian_determinant_r_power=det.power("r"),
-        metric_rr=metric[0][0].value(),
-        metric_rphi=metric[0][1].value(),
-        metric_phir=metric[1][0].value(),
-        metric_phiphi_coefficient=metric[1][1].only_coefficient(),
+        metric_rr=_rational(metric[0][0].value()),
+        metric_rphi=_rational(metric[0][1].value()),
+        metric_phir=_rational(metric[1][0].value()),
+        metric_phiphi_coefficient=_rational(metric[1][1].only_coefficient()),
         metric_phiphi_r_power=metric[1][1].power("r"),
-        inverse_metric_rr=inverse[0][0].value(),
-        inverse_metric_rphi=inverse[0][1].value(),
-        inverse_metric_phir=inverse[1][0].value(),
-        inverse_metric_phiphi_coefficient=inverse[1][1].only_coefficient(),
+        inverse_metric_rr=_rational(inverse[0][0].value()),
+        inverse_metric_rphi=_rational(inverse[0][1].value()),
+        inverse_metric_phir=_rational(inverse[1][0].value()),
+        inverse_metric_phiphi_coefficient=_rational(inverse[1][1].only_coefficient()),
         inverse_metric_phiphi_r_power=inverse[1][1].power("r"),
-        kinetic_radial_coefficient=radial.only_coefficient(),
-        kinetic_angular_coefficient=angular.only_coefficient(),
+        kinetic_radial_coefficient=_rational(radial.only_coefficient()),
+        kinetic_angular_coefficient=_rational(angular.only_coefficient()),
         kinetic_angular_rate_power=angular.power("pd"),
         kinetic_angular_r_power=angular.power("r"),
-        radial_momentum_coefficient=p_r.only_coefficient(),
+        radial_momentum_coefficient=_rational(p_r.only_coefficient()),
         angular_momentum_r_power=p_phi.power("r"),
         centrifugal_rate_power=centrifugal.power("pd"),
         angular_momentum_rate_r_power=p_phi_rate.part("pdd", 1).power("r"),
-        coriolis_coefficient=p_phi_rate.part("pdd", 0).only_coefficient(),
+        coriolis_coefficient=_rational(p_phi_rate.part("pdd", 0).only_coefficient()),
     )
 
 
@@ -174,17 +174,15 @@ def polar_mechanics() -> PolarMechanics:
 class PolarState:
     """Polar coordinates of a plane motion and their first and second time derivatives."""
 
-    r: float
-    phi: float
-    rdot: float
-    phidot: float
-    rddot: float
-    phiddot: float
+    r: Real
+    phi: Real
+    rdot: Real
+    phidot: Real
+    rddot: Real
+    phiddot: Real
 
 
-def polar_state(
-    position: Sequence[float], velocity: Sequence[float], acceleration: Sequence[float]
-) -> PolarState:
+def polar_state(position: Vector, velocity: Vector, acceleration: Vector) -> PolarState:
     """(r, phi) and their rates from Cartesian position, velocity and acceleration, by the
     Kajobian (12.26): q' = K x', and q'' from differentiating q' = K x' once more."""
     x, y = (inputs.real(v, "position") for v in position)
@@ -205,15 +203,15 @@ def polar_state(
 class PolarForces:
     """Terms of the polar Lagrange equations (12.33) at one state, from the exact Lagrangian."""
 
-    radial_momentum: float  # p_r = M r'
-    angular_momentum: float  # p_phi = M r^2 phi'
-    radial_momentum_rate: float  # d p_r / dt = M r''
-    centrifugal: float  # dT/dr = M r phi'^2
-    angular_momentum_rate: float  # d p_phi / dt = M r^2 phi'' + 2 M r r' phi'
-    coriolis: float  # 2 M r r' phi'
+    radial_momentum: Real  # p_r = M r'
+    angular_momentum: Real  # p_phi = M r^2 phi'
+    radial_momentum_rate: Real  # d p_r / dt = M r''
+    centrifugal: Real  # dT/dr = M r phi'^2
+    angular_momentum_rate: Real  # d p_phi / dt = M r^2 phi'' + 2 M r r' phi'
+    coriolis: Real  # 2 M r r' phi'
 
 
-def polar_forces(mass: Any, state: PolarState) -> PolarForces:
+def polar_forces(mass: Real, state: PolarState) -> PolarForces:
     """Evaluate the derived polar momenta and forces (12.32)-(12.33) at a state."""
     inputs.mass(mass)
     kinetic, _ = _polar_lagrangian()
@@ -238,7 +236,7 @@ def polar_forces(mass: Any, state: PolarState) -> PolarForces:
 
 
 def euler_lagrange_residual(
-    mass: Any, state: PolarState, potential_gradient: Sequence[float]
+    mass: Real, state: PolarState, potential_gradient: Sequence[float]
 ) -> tuple[float, float]:
     """Residuals d/dt(dL/dq') - dL/dq of the polar Lagrange equations (12.25c) for
     L = T - U(r, phi), with (dU/dr, dU/dphi) given: zero along a true motion."""
@@ -251,8 +249,8 @@ def euler_lagrange_residual(
 
 
 def polar_hamiltonian(
-    mass: Any, r: Any, radial_momentum: Any, angular_momentum: Any, potential: Any = 0
-) -> Any:
+    mass: Real, r: Real, radial_momentum: Real, angular_momentum: Real, potential: Real = 0
+) -> Real:
     """H = p_r^2/(2M) + p_phi^2/(2 M r^2) + U = g^mn p_m p_n /(2M) + U (12.37c), with the
     polar inverse metric diag(1, 1/r^2)."""
     inputs.mass(mass)
@@ -263,8 +261,8 @@ def polar_hamiltonian(
 
 
 def polar_lagrangian(
-    mass: Any, r: Any, rdot: Any, phidot: Any, potential: Any = 0, phi: Any = 0
-) -> Any:
+    mass: Real, r: Real, rdot: Real, phidot: Real, potential: Real = 0, phi: Real = 0
+) -> Real:
     """L = T - U (12.25b) of a particle at polar (r, phi) moving at rates (r', phi'): the
     Cartesian velocity is J.q' by the polar Jacobian (12.19), (12.26), and
     T = M (vx^2 + vy^2)/2 (12.23). Floats (the Jacobian takes the cosine and sine)."""
@@ -274,7 +272,7 @@ def polar_lagrangian(
 
 
 def polar_terms(
-    mass: Any, r: Any, rdot: Any, phidot: Any, rddot: Any = 0, phiddot: Any = 0
+    mass: Real, r: Real, rdot: Real, phidot: Real, rddot: Real = 0, phiddot: Real = 0
 ) -> PolarForces:
     """The polar momenta and forces of (12.32)-(12.33), ``polar_forces``, at a state given by
     its polar coordinate rates (the angle itself does not enter)."""
@@ -288,12 +286,12 @@ def polar_terms(
 class PolarGeneralizedForces:
     """dL/dq of the polar Lagrangian L = T - U: the right sides dp_m/dt of (12.25d), (12.33)."""
 
-    radial: Any  # dL/dr = M r phi'^2 - dU/dr
-    angular: Any  # dL/dphi = -dU/dphi
+    radial: Real  # dL/dr = M r phi'^2 - dU/dr
+    angular: Real  # dL/dphi = -dU/dphi
 
 
 def polar_generalized_forces(
-    mass: Any, r: Any, rdot: Any, phidot: Any, du_dr: Any, du_dphi: Any = 0
+    mass: Real, r: Real, rdot: Real, phidot: Real, du_dr: Real, du_dphi: Real = 0
 ) -> PolarGeneralizedForces:
     """dL/dr and dL/dphi of L = T - U(r, phi) in polar coordinates (12.33): the kinetic part
     differentiated exactly (the centrifugal term of ``polar_terms``), minus the potential's

@@ -14,15 +14,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
-from mechmodel.lagrange._common import _lib
+from mechmodel.lagrange._common import _lib, _rational
 from mechmodel.lagrange.calculus import angle_derivative
+from mechmodel.typing import Real
 
 
-def trajectory_position(time: Any, speed: Any, angle: Any, gravity: Any) -> tuple[Any, Any]:
+def trajectory_position(time: Real, speed: Real, angle: Real, gravity: Real) -> tuple[Real, Real]:
     """(x, y) at time t of a projectile launched from the origin at speed v0 and elevation
     angle alpha in uniform gravity g (12.14a-b): (v0 cos(a) t, v0 sin(a) t - g t^2/2), m."""
     inputs.real(time, "time")
@@ -33,7 +33,7 @@ def trajectory_position(time: Any, speed: Any, angle: Any, gravity: Any) -> tupl
     return speed * lib.cos(angle) * time, speed * lib.sin(angle) * time - gravity * time**2 / 2
 
 
-def trajectory_height(x: Any, speed: Any, angle: Any, gravity: Any) -> Any:
+def trajectory_height(x: Real, speed: Real, angle: Real, gravity: Real) -> Real:
     """Height y(x) = x tan(a) - g x^2 / (2 v0^2 cos^2 a) of the trajectory (12.14c), m."""
     inputs.real(x, "x")
     inputs.positive(speed, "speed")
@@ -46,7 +46,7 @@ def trajectory_height(x: Any, speed: Any, angle: Any, gravity: Any) -> Any:
     return x * lib.tan(angle) - gravity * x**2 / (2 * speed**2 * c**2)
 
 
-def envelope_height(x: Any, speed: Any, gravity: Any) -> Any:
+def envelope_height(x: Real, speed: Real, gravity: Real) -> Real:
     """Height of the envelope of all trajectories of speed v0 (12.17):
     y_env(x) = v0^2/(2g) - g x^2/(2 v0^2), m. Exact for ``int`` and ``Fraction``."""
     inputs.real(x, "x")
@@ -55,7 +55,7 @@ def envelope_height(x: Any, speed: Any, gravity: Any) -> Any:
     return speed**2 / (2 * gravity) - gravity * x**2 / (2 * speed**2)
 
 
-def contact_point(speed: Any, angle: Any, gravity: Any) -> tuple[Any, Any]:
+def contact_point(speed: Real, angle: Real, gravity: Real) -> tuple[Real, Real]:
     """Where the trajectory of elevation a touches the envelope (12.16c):
     x = v0^2 / (g tan a), y = y_env(x). ``ValueError`` for a = 0 (the horizontal launch never
     touches it) or a vertical one."""
@@ -79,7 +79,7 @@ def _generating_polynomial() -> Laurent:
     return height_x - Laurent.var("y")
 
 
-def _fountain_values(x: Any, y: Any, speed: Any, angle: Any, gravity: Any) -> dict[str, Any]:
+def _fountain_values(x: Real, y: Real, speed: Real, angle: Real, gravity: Real) -> dict[str, Real]:
     inputs.real(x, "x")
     inputs.real(y, "y")
     inputs.positive(speed, "speed")
@@ -92,7 +92,7 @@ def _fountain_values(x: Any, y: Any, speed: Any, angle: Any, gravity: Any) -> di
     return {"x": x, "y": y, "g": gravity, "v0": speed, "c": c, "s": lib.sin(angle)}
 
 
-def generating_solution(x: Any, y: Any, speed: Any, angle: Any, gravity: Any) -> Any:
+def generating_solution(x: Real, y: Real, speed: Real, angle: Real, gravity: Real) -> Real:
     """The contact generating function S(v0, a : x, y) = -y + y(x) of (12.15) at the point
     (x, y), m: zero on the trajectory of speed v0 and elevation a, positive below it. From the
     exact polynomial of ``_generating_polynomial``."""
@@ -104,14 +104,14 @@ def _angle_slope() -> Laurent:
     return angle_derivative(_generating_polynomial(), "c", "s")
 
 
-def generating_angle_derivative(x: Any, speed: Any, angle: Any, gravity: Any) -> Any:
+def generating_angle_derivative(x: Real, speed: Real, angle: Real, gravity: Real) -> Real:
     """dS/da of the generating function (12.16b) at x for the elevation a, m/rad: the exact
     angle derivative (cos' = -sin, sin' = cos) of the polynomial S, evaluated. It vanishes
     where the trajectory of elevation a touches the envelope of the family."""
     return _angle_slope().evaluate(_fountain_values(x, 0, speed, angle, gravity))
 
 
-def contact_tangent(x: Any, speed: Any, gravity: Any) -> Any:
+def contact_tangent(x: Real, speed: Real, gravity: Real) -> Real:
     """tan a of the trajectory that touches the envelope at the abscissa x (12.16c): dS/da
     times cos^3 a is A c + B s with A, B free of the angle, so dS/da = 0 where
     tan a = s/c = -A/B, evaluated at x, v0 and g. ``ValueError`` at x = 0."""
@@ -131,7 +131,7 @@ def contact_tangent(x: Any, speed: Any, gravity: Any) -> Any:
     return -a.evaluate(values) / denominator
 
 
-def contact_distance(speed: Any, angle: Any, gravity: Any) -> Any:
+def contact_distance(speed: Real, angle: Real, gravity: Real) -> Real:
     """The abscissa x where the trajectory of elevation a touches the envelope (12.16c): dS/da
     is A x + B x^2 with A, B functions of the angle, zero at x = 0 and at x = -A/B.
     ``ValueError`` for a horizontal launch (it never touches the envelope)."""
@@ -148,7 +148,7 @@ def contact_distance(speed: Any, angle: Any, gravity: Any) -> Any:
     return -a / b
 
 
-def envelope_by_maximum(x: Any, speed: Any, gravity: Any) -> float:
+def envelope_by_maximum(x: Real, speed: Real, gravity: Real) -> float:
     """Height of the envelope of all trajectories of speed v0 at the abscissa x (12.17), m,
     found without its formula: the highest y(x) of (12.14c) over all elevations, by a bounded
     scalar search in the angle (at x = 0 the highest point of the vertical launch, by a search
@@ -172,7 +172,7 @@ def envelope_by_maximum(x: Any, speed: Any, gravity: Any) -> float:
             method="bounded",
             options={"xatol": 1e-13 * end},
         )
-        return trajectory_position(float(result.x), v0, up, g)[1]
+        return float(trajectory_position(float(result.x), v0, up, g)[1])
     edge = math.nextafter(math.pi / 2, 0.0)
     result = minimize_scalar(
         lambda a: -trajectory_height(x, v0, a, g),
@@ -180,7 +180,7 @@ def envelope_by_maximum(x: Any, speed: Any, gravity: Any) -> float:
         method="bounded",
         options={"xatol": 1e-13},
     )
-    return trajectory_height(x, v0, float(result.x), g)
+    return float(trajectory_height(x, v0, float(result.x), g))
 
 
 @dataclass(frozen=True)
@@ -241,7 +241,7 @@ def projectile_family() -> ProjectileFamily:
     k_sec = next(
         k for k in range(1, 5) if (secant2 - (tan_ratio**k).reduce_trig("c", "s")).is_constant()
     )
-    sec_constant = (secant2 - (tan_ratio**k_sec).reduce_trig("c", "s")).value()
+    sec_constant = _rational((secant2 - (tan_ratio**k_sec).reduce_trig("c", "s")).value())
     # S in T: y(x) = x T - g x^2 (1 + T^2) / (2 v0^2)
     quad_no_cos = quad * Laurent.var("c", 2)
     height_tan = x * tan + quad_no_cos * (sec_constant + tan**k_sec)
@@ -251,24 +251,28 @@ def projectile_family() -> ProjectileFamily:
     envelope = height_tan.substitute("T", contact_tan)
     env_const = envelope.part("x", 0)
     env_quad = envelope.part("x", 2)
-    shape_ratio = env_quad.only_coefficient() / quad_no_cos.only_coefficient()  # = cos^2 a
+    env_x2, traj_x2 = (
+        _rational(env_quad.only_coefficient()),
+        _rational(quad_no_cos.only_coefficient()),
+    )
+    shape_ratio = env_x2 / traj_x2  # = cos^2 a
     return ProjectileFamily(
-        time_coefficient=-gravity_term.only_coefficient(),
+        time_coefficient=-_rational(gravity_term.only_coefficient()),
         time_power=gravity_term.power("t"),
-        quadratic_denominator=1 / abs(quad.only_coefficient()),
+        quadratic_denominator=1 / abs(_rational(quad.only_coefficient())),
         x_power=quad.power("x"),
         v0_power=-quad.power("v0"),
         cos_power=-quad.power("c"),
         tan_derivative_cos_power=-d_tan.power("c"),
-        secant_derivative_coefficient=d_secant2.only_coefficient(),
+        secant_derivative_coefficient=_rational(d_secant2.only_coefficient()),
         secant_derivative_cos_power=-d_secant2.power("c"),
         secant_tan_constant=sec_constant,
         secant_tan_power=k_sec,
         contact_tan_v0_power=contact_tan.power("v0"),
         contact_tan_square_v0_power=(contact_tan**2).power("v0"),
-        envelope_constant_denominator=1 / env_const.only_coefficient(),
+        envelope_constant_denominator=1 / _rational(env_const.only_coefficient()),
         envelope_constant_v0_power=env_const.power("v0"),
-        envelope_quadratic_denominator=1 / abs(env_quad.only_coefficient()),
+        envelope_quadratic_denominator=1 / abs(_rational(env_quad.only_coefficient())),
         envelope_x_power=env_quad.power("x"),
         envelope_v0_power=-env_quad.power("v0"),
         envelope_shape_angle=math.acos(math.sqrt(float(shape_ratio))),
