@@ -8,6 +8,7 @@ The numerical Legendre transform is checked against sympy's symbolic one.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from fractions import Fraction
 from functools import cache
 
@@ -37,7 +38,7 @@ FLOOR = REL * 1e-300  # subnormal magnitudes carry no relative precision: an abs
 SEARCH = 1e-9  # relative error allowed to a Legendre value found by a bounded scalar search
 
 
-def _quartic(a: float, b: float):
+def _quartic(a: float, b: float) -> Callable[[float], float]:
     return lambda v: a * v**2 / 2 + b * v**4 / 4
 
 
@@ -80,7 +81,7 @@ def test_hamiltonian_is_pv_minus_l_at_the_tangent_point(
 
 
 @cache
-def _sympy_hamiltonians():
+def _sympy_hamiltonians() -> list[tuple[Callable[..., float], Callable[..., float]]]:
     """H(p) of L = m v^2/2 + c v and of L = m (e^v - 1 - v), derived by sympy: solve
     dL/dv = p for v (one real root each) and put it into p v - L."""
     import sympy
@@ -235,15 +236,20 @@ def test_projectile_family_is_the_books_algebra() -> None:
     horizontal trajectory shares the envelope's shape."""
     fam = lagrange.projectile_family()
     assert (fam.time_coefficient, fam.time_power) == (Fraction(1, 2), 2)
-    assert (fam.quadratic_denominator, fam.x_power, fam.v0_power, fam.cos_power) == (2, 2, 2, 2)
-    assert (fam.secant_derivative_coefficient, fam.secant_derivative_cos_power) == (2, 3)
+    assert (fam.quadratic_denominator, fam.x_power, fam.v0_power, fam.cos_power) == (
+        Fraction(2),
+        2,
+        2,
+        2,
+    )
+    assert (fam.secant_derivative_coefficient, fam.secant_derivative_cos_power) == (Fraction(2), 3)
     assert (fam.secant_tan_constant, fam.secant_tan_power, fam.tan_derivative_cos_power) == (
-        1,
+        Fraction(1),
         2,
         2,
     )
     assert (fam.contact_tan_v0_power, fam.contact_tan_square_v0_power) == (2, 4)
-    assert (fam.envelope_constant_denominator, fam.envelope_constant_v0_power) == (2, 2)
+    assert (fam.envelope_constant_denominator, fam.envelope_constant_v0_power) == (Fraction(2), 2)
     assert fam.envelope_shape_angle == 0
 
 
@@ -286,10 +292,10 @@ def test_euler_lagrange_residual_vanishes_on_oscillator_orbits(
         return  # polar coordinates are singular at the origin
     res_r, res_phi = lagrange.euler_lagrange_residual(mass, state, (mass * state.r, 0.0))
     f = lagrange.polar_forces(mass, state)
-    scale = mass * (abs(state.rddot) + state.r * state.phidot**2 + state.r) + 1
+    scale = mass * (abs(float(state.rddot)) + state.r * state.phidot**2 + state.r) + 1
     assert abs(res_r) <= 1e-9 * scale
-    angular = mass * state.r**2 * abs(state.phiddot)
-    assert abs(res_phi) <= 1e-9 * (abs(f.coriolis) + angular + 1)
+    angular = mass * state.r**2 * abs(float(state.phiddot))
+    assert abs(res_phi) <= 1e-9 * (abs(float(f.coriolis)) + angular + 1)
     # a central force keeps p_phi: the Coriolis term balances M r^2 phi'' (12.33)
     assert abs(f.coriolis + mass * state.r**2 * state.phiddot) <= 1e-9 * (angular + 1)
 
@@ -317,12 +323,14 @@ def test_euler_lagrange_residual_vanishes_on_anisotropic_orbits(
     du_dphi = mass * state.r**2 * (wy * wy - 1) * s * c
     res_r, res_phi = lagrange.euler_lagrange_residual(mass, state, (du_dr, du_dphi))
     f = lagrange.polar_forces(mass, state)
-    scale = mass * (abs(state.rddot) + state.r * state.phidot**2 + state.r * (1 + wy * wy))
+    scale = mass * (abs(float(state.rddot)) + state.r * state.phidot**2 + state.r * (1 + wy * wy))
     assert abs(res_r) <= 1e-9 * (scale + 1)
     assert abs(res_phi) <= 1e-9 * (
-        abs(f.coriolis) + abs(f.angular_momentum_rate) + scale * state.r + 1
+        abs(float(f.coriolis)) + abs(float(f.angular_momentum_rate)) + scale * state.r + 1
     )
-    assert abs(f.angular_momentum_rate + du_dphi) <= 1e-9 * (abs(f.coriolis) + scale * state.r + 1)
+    assert abs(f.angular_momentum_rate + du_dphi) <= 1e-9 * (
+        abs(float(f.coriolis)) + scale * state.r + 1
+    )
 
 
 @given(oscillator_orbits(), st.floats(min_value=0.1, max_value=10))
@@ -349,19 +357,24 @@ def test_polar_mechanics_is_the_books_algebra() -> None:
     """g = diag(1, r^2), g^-1 = diag(1, r^-2), L = M (r'^2 + r^2 phi'^2)/2, p_phi = M r^2 phi',
     centrifugal M r phi'^2 and Coriolis 2 M r r' phi' (12.26)-(12.33)."""
     p = lagrange.polar_mechanics()
-    assert (p.metric_rr, p.metric_rphi, p.metric_phir, p.metric_phiphi_r_power) == (1, 0, 0, 2)
-    assert (p.inverse_metric_rr, p.inverse_metric_phiphi_r_power) == (1, -2)
+    assert (p.metric_rr, p.metric_rphi, p.metric_phir, p.metric_phiphi_r_power) == (
+        Fraction(1),
+        Fraction(0),
+        Fraction(0),
+        2,
+    )
+    assert (p.inverse_metric_rr, p.inverse_metric_phiphi_r_power) == (Fraction(1), -2)
     assert p.kinetic_radial_coefficient == p.kinetic_angular_coefficient == Fraction(1, 2)
     assert (p.angular_momentum_r_power, p.centrifugal_rate_power, p.coriolis_coefficient) == (
         2,
         2,
-        2,
+        Fraction(2),
     )
     assert p.jacobian_determinant_r_power == 1
-    assert (p.metric_phiphi_coefficient, p.inverse_metric_phiphi_coefficient) == (1, 1)
-    assert (p.inverse_metric_rphi, p.inverse_metric_phir) == (0, 0)
+    assert (p.metric_phiphi_coefficient, p.inverse_metric_phiphi_coefficient) == (Fraction(1),) * 2
+    assert (p.inverse_metric_rphi, p.inverse_metric_phir) == (Fraction(0),) * 2
     assert (p.kinetic_angular_rate_power, p.kinetic_angular_r_power) == (2, 2)
-    assert (p.radial_momentum_coefficient, p.angular_momentum_rate_r_power) == (1, 2)
+    assert (p.radial_momentum_coefficient, p.angular_momentum_rate_r_power) == (Fraction(1), 2)
 
 
 # -- exact algebra --------------------------------------------------------------------------------
@@ -512,7 +525,7 @@ def test_energy_is_the_same_in_every_scaled_coordinate(
     got = lagrange.scaled_coordinate_energy(fm, quasi, Fraction(1, 2))
     assert_close(got, float(lag), abs=FLOOR)
     assert_close(got, lagrange.estrangian(quasi), abs=FLOOR)
-    heavier = lagrange.scaled_coordinate_energy([2 * m for m in fm], quasi, "1/2")
+    heavier = lagrange.scaled_coordinate_energy([2 * m for m in fm], quasi, Fraction(1, 2))
     assert_close(heavier, got, abs=FLOOR)  # E(V) has no mass in it
 
 
@@ -671,7 +684,9 @@ def test_gradient_potential_has_gradient_m_dot_v(
             f(skew, list(v))
 
 
-def _cartesian_state(orbit: tuple[float, float, float, float, float]):
+def _cartesian_state(
+    orbit: tuple[float, float, float, float, float],
+) -> tuple[tuple[float, float], tuple[float, float]]:
     a_amp, b_amp, a, b, t = orbit
     pos = (a_amp * math.cos(t + a), b_amp * math.cos(t + b))
     vel = (-a_amp * math.sin(t + a), -b_amp * math.sin(t + b))

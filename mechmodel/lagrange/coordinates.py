@@ -88,7 +88,7 @@ def gradient_potential(
     return total
 
 
-def metric_kinetic_energy(mass: Real, metric: Matrix, rates: Vector) -> Real:
+def metric_kinetic_energy(mass: Real, metric: Matrix, rates: Vector) -> float:
     """Kinetic energy of one particle moving at the generalized velocities q' in coordinates
     of covariant metric g (12.31), J or scaled: any Jacobian J with J^T J = g gives the same
     Cartesian speed, so take the Cholesky factor of g (upper triangular, positive diagonal),

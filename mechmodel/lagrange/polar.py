@@ -24,7 +24,7 @@ from mechmodel.lagrange.calculus import angle_derivative, time_derivative
 from mechmodel.typing import Real, Vector
 
 
-def polar_jacobian(r: Real, phi: Real) -> list[list[Real]]:
+def polar_jacobian(r: Real, phi: Real) -> list[list[float]]:
     """Jacobian J[j][m] = dx^j/dq^m of x = r cos phi, y = r sin phi (12.26); its columns are the
     covariant bases E_r, E_phi."""
     inputs.real(r, "r")
@@ -33,7 +33,7 @@ def polar_jacobian(r: Real, phi: Real) -> list[list[Real]]:
     return [[c, -r * s], [s, r * c]]
 
 
-def polar_kajobian(r: Real, phi: Real) -> list[list[Real]]:
+def polar_kajobian(r: Real, phi: Real) -> list[list[float]]:
     """The inverse ("Kajobian") K[m][j] = dq^m/dx^j of the polar Jacobian (12.26); its rows
     are the contravariant bases E^r, E^phi. ``ValueError`` at the origin."""
     inputs.real(r, "r")
@@ -44,13 +44,13 @@ def polar_kajobian(r: Real, phi: Real) -> list[list[Real]]:
     return [[c, s], [-s / r, c / r]]
 
 
-def polar_metric(r: Real, phi: Real = 0) -> list[list[Real]]:
+def polar_metric(r: Real, phi: Real = 0) -> list[list[float]]:
     """Covariant metric g_mn = E_m . E_n = (J^T J)_mn of polar coordinates (12.30b)."""
     j = polar_jacobian(r, phi)
     return [[sum(j[k][m] * j[k][n] for k in range(2)) for n in range(2)] for m in range(2)]
 
 
-def polar_inverse_metric(r: Real, phi: Real = 0) -> list[list[Real]]:
+def polar_inverse_metric(r: Real, phi: Real = 0) -> list[list[float]]:
     """Contravariant metric g^mn = E^m . E^n = (K K^T)^mn of polar coordinates (12.30c)."""
     k = polar_kajobian(r, phi)
     return [[sum(k[m][j] * k[n][j] for j in range(2)) for n in range(2)] for m in range(2)]
@@ -250,7 +250,7 @@ def euler_lagrange_residual(
 
 def polar_hamiltonian(
     mass: Real, r: Real, radial_momentum: Real, angular_momentum: Real, potential: Real = 0
-) -> Real:
+) -> float:
     """H = p_r^2/(2M) + p_phi^2/(2 M r^2) + U = g^mn p_m p_n /(2M) + U (12.37c), with the
     polar inverse metric diag(1, 1/r^2)."""
     inputs.mass(mass)
@@ -262,7 +262,7 @@ def polar_hamiltonian(
 
 def polar_lagrangian(
     mass: Real, r: Real, rdot: Real, phidot: Real, potential: Real = 0, phi: Real = 0
-) -> Real:
+) -> float:
     """L = T - U (12.25b) of a particle at polar (r, phi) moving at rates (r', phi'): the
     Cartesian velocity is J.q' by the polar Jacobian (12.19), (12.26), and
     T = M (vx^2 + vy^2)/2 (12.23). Floats (the Jacobian takes the cosine and sine)."""

@@ -22,7 +22,7 @@ from mechmodel.lagrange.calculus import angle_derivative
 from mechmodel.typing import Real
 
 
-def trajectory_position(time: Real, speed: Real, angle: Real, gravity: Real) -> tuple[Real, Real]:
+def trajectory_position(time: Real, speed: Real, angle: Real, gravity: Real) -> tuple[float, float]:
     """(x, y) at time t of a projectile launched from the origin at speed v0 and elevation
     angle alpha in uniform gravity g (12.14a-b): (v0 cos(a) t, v0 sin(a) t - g t^2/2), m."""
     inputs.real(time, "time")
@@ -33,7 +33,7 @@ def trajectory_position(time: Real, speed: Real, angle: Real, gravity: Real) -> 
     return speed * lib.cos(angle) * time, speed * lib.sin(angle) * time - gravity * time**2 / 2
 
 
-def trajectory_height(x: Real, speed: Real, angle: Real, gravity: Real) -> Real:
+def trajectory_height(x: Real, speed: Real, angle: Real, gravity: Real) -> float:
     """Height y(x) = x tan(a) - g x^2 / (2 v0^2 cos^2 a) of the trajectory (12.14c), m."""
     inputs.real(x, "x")
     inputs.positive(speed, "speed")
@@ -92,7 +92,7 @@ def _fountain_values(x: Real, y: Real, speed: Real, angle: Real, gravity: Real) 
     return {"x": x, "y": y, "g": gravity, "v0": speed, "c": c, "s": lib.sin(angle)}
 
 
-def generating_solution(x: Real, y: Real, speed: Real, angle: Real, gravity: Real) -> Real:
+def generating_solution(x: Real, y: Real, speed: Real, angle: Real, gravity: Real) -> float:
     """The contact generating function S(v0, a : x, y) = -y + y(x) of (12.15) at the point
     (x, y), m: zero on the trajectory of speed v0 and elevation a, positive below it. From the
     exact polynomial of ``_generating_polynomial``."""
@@ -104,7 +104,7 @@ def _angle_slope() -> Laurent:
     return angle_derivative(_generating_polynomial(), "c", "s")
 
 
-def generating_angle_derivative(x: Real, speed: Real, angle: Real, gravity: Real) -> Real:
+def generating_angle_derivative(x: Real, speed: Real, angle: Real, gravity: Real) -> float:
     """dS/da of the generating function (12.16b) at x for the elevation a, m/rad: the exact
     angle derivative (cos' = -sin, sin' = cos) of the polynomial S, evaluated. It vanishes
     where the trajectory of elevation a touches the envelope of the family."""
@@ -131,7 +131,7 @@ def contact_tangent(x: Real, speed: Real, gravity: Real) -> Real:
     return -a.evaluate(values) / denominator
 
 
-def contact_distance(speed: Real, angle: Real, gravity: Real) -> Real:
+def contact_distance(speed: Real, angle: Real, gravity: Real) -> float:
     """The abscissa x where the trajectory of elevation a touches the envelope (12.16c): dS/da
     is A x + B x^2 with A, B functions of the angle, zero at x = 0 and at x = -A/B.
     ``ValueError`` for a horizontal launch (it never touches the envelope)."""

@@ -211,7 +211,14 @@ def _fountain(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             label="45° paths" if k == 6 else ("other elevations" if k == 1 else None),
         )
         xc, yc = contact_point(v0, a, g)
-        ax.plot([xc], [yc], "o", color="k", ms=3, label="contact points" if k == 1 else None)
+        ax.plot(
+            [float(xc)],
+            [float(yc)],
+            "o",
+            color="k",
+            ms=3,
+            label="contact points" if k == 1 else None,
+        )
     shape = float(value_of(claims, "ch12.fountain.envelope-shape-angle"))
     ax.plot(
         xs,
@@ -220,7 +227,9 @@ def _fountain(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         lw=1.4,
         label="horizontal launch",
     )
-    ax.plot(xs, [envelope_height(x, v0, g) for x in xs], "k--", lw=1.4, label="envelope (12.17)")
+    ax.plot(
+        xs, [float(envelope_height(x, v0, g)) for x in xs], "k--", lw=1.4, label="envelope (12.17)"
+    )
     ax.set_ylim(-0.6 * reach, 0.62 * reach)
     ax.set_xlim(-1.2 * reach, 1.2 * reach)
     ax.set_aspect("equal")
@@ -328,7 +337,9 @@ def _phase(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         segs = np.stack([pts[:-1], pts[1:]], axis=1)
         phase = ((s[:-1] + s[1:]) / 2 / hbar) % turn / turn
         # 17,000 coloured segments: drawn as one embedded image, not 17,000 SVG paths
-        ax.add_collection(LineCollection(segs, colors=cmap(phase), linewidths=0.7, rasterized=True))
+        ax.add_collection(
+            LineCollection(list(segs), colors=cmap(phase), linewidths=0.7, rasterized=True)
+        )
     ax.set_xlim(-1.6, 1.6)
     ax.set_ylim(-1.6, 1.6)
     ax.set_aspect("equal")
