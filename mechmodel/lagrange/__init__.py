@@ -48,228 +48,171 @@ The models are split along the chapter's equation groups, one submodule each:
   Figs. 12.12-12.15; exercise 1.12.3);
 - ``calculus``: angle and time derivatives of Laurent polynomials, used by the above.
 
-This package re-exports every public name, so the catalog's ``lagrange.function`` resolves.
+This package re-exports every public name (``__all__``), so the catalog's
+``lagrange.function`` resolves.
 """
 
 from __future__ import annotations
 
-from mechmodel.ellipse import kinetic_energy as kinetic_energy  # L(v) of free bodies (12.3)
+from mechmodel.ellipse import kinetic_energy  # L(v) of free bodies (12.3)
 from mechmodel.lagrange.action import (
-    OscillatorPaths as OscillatorPaths,
+    OscillatorPaths,
+    PhaseFactorParts,
+    action_sum,
+    bohr_phase,
+    common_speed,
+    oscillator_paths,
+    palette_amplitude,
+    palette_phase,
+    path_action,
+    phase_factor,
+    phase_factor_parts,
+    phase_turn,
+    turning_sequence,
 )
-from mechmodel.lagrange.action import (
-    PhaseFactorParts as PhaseFactorParts,
-)
-from mechmodel.lagrange.action import (
-    action_sum as action_sum,
-)
-from mechmodel.lagrange.action import (
-    bohr_phase as bohr_phase,
-)
-from mechmodel.lagrange.action import (
-    common_speed as common_speed,
-)
-from mechmodel.lagrange.action import (
-    oscillator_paths as oscillator_paths,
-)
-from mechmodel.lagrange.action import (
-    palette_amplitude as palette_amplitude,
-)
-from mechmodel.lagrange.action import (
-    palette_phase as palette_phase,
-)
-from mechmodel.lagrange.action import (
-    path_action as path_action,
-)
-from mechmodel.lagrange.action import (
-    phase_factor as phase_factor,
-)
-from mechmodel.lagrange.action import (
-    phase_factor_parts as phase_factor_parts,
-)
-from mechmodel.lagrange.action import (
-    phase_turn as phase_turn,
-)
-from mechmodel.lagrange.action import (
-    turning_sequence as turning_sequence,
-)
-from mechmodel.lagrange.calculus import (
-    angle_derivative as angle_derivative,
-)
-from mechmodel.lagrange.calculus import (
-    time_derivative as time_derivative,
-)
+from mechmodel.lagrange.calculus import angle_derivative, time_derivative
 from mechmodel.lagrange.coordinates import (
-    CoordinateHamiltonian as CoordinateHamiltonian,
-)
-from mechmodel.lagrange.coordinates import (
-    QuadraticExtremum as QuadraticExtremum,
-)
-from mechmodel.lagrange.coordinates import (
-    coordinate_differential as coordinate_differential,
-)
-from mechmodel.lagrange.coordinates import (
-    gradient_potential as gradient_potential,
-)
-from mechmodel.lagrange.coordinates import (
-    hamiltonian_of_momentum as hamiltonian_of_momentum,
-)
-from mechmodel.lagrange.coordinates import (
-    hamiltonian_of_rate as hamiltonian_of_rate,
-)
-from mechmodel.lagrange.coordinates import (
-    metric_kinetic_energy as metric_kinetic_energy,
-)
-from mechmodel.lagrange.coordinates import (
-    quadratic_extremum as quadratic_extremum,
-)
-from mechmodel.lagrange.coordinates import (
-    quadratic_function_slope as quadratic_function_slope,
+    CoordinateHamiltonian,
+    QuadraticExtremum,
+    coordinate_differential,
+    gradient_potential,
+    hamiltonian_of_momentum,
+    hamiltonian_of_rate,
+    metric_kinetic_energy,
+    quadratic_extremum,
+    quadratic_function_slope,
 )
 from mechmodel.lagrange.energies import (
-    EllipseRadii as EllipseRadii,
-)
-from mechmodel.lagrange.energies import (
-    EllipseSlopes as EllipseSlopes,
-)
-from mechmodel.lagrange.energies import (
-    RootMassMaps as RootMassMaps,
-)
-from mechmodel.lagrange.energies import (
-    RootMassPowers as RootMassPowers,
-)
-from mechmodel.lagrange.energies import (
-    ellipse_radius_ratio as ellipse_radius_ratio,
-)
-from mechmodel.lagrange.energies import (
-    energy_ellipse_radii as energy_ellipse_radii,
-)
-from mechmodel.lagrange.energies import (
-    estrangian as estrangian,
-)
-from mechmodel.lagrange.energies import (
-    hamiltonian_free as hamiltonian_free,
-)
-from mechmodel.lagrange.energies import (
-    ke_ellipse_slopes as ke_ellipse_slopes,
-)
-from mechmodel.lagrange.energies import (
-    momenta as momenta,
-)
-from mechmodel.lagrange.energies import (
-    quasi_velocities as quasi_velocities,
-)
-from mechmodel.lagrange.energies import (
-    root_mass_maps as root_mass_maps,
-)
-from mechmodel.lagrange.energies import (
-    root_mass_powers as root_mass_powers,
-)
-from mechmodel.lagrange.energies import (
-    scaled_coordinate_energy as scaled_coordinate_energy,
+    EllipseRadii,
+    EllipseSlopes,
+    RootMassMaps,
+    RootMassPowers,
+    ellipse_radius_ratio,
+    energy_ellipse_radii,
+    estrangian,
+    hamiltonian_free,
+    ke_ellipse_slopes,
+    momenta,
+    quasi_velocities,
+    root_mass_maps,
+    root_mass_powers,
+    scaled_coordinate_energy,
 )
 from mechmodel.lagrange.legendre import (
-    LegendreResult as LegendreResult,
-)
-from mechmodel.lagrange.legendre import (
-    LegendreStationarity as LegendreStationarity,
-)
-from mechmodel.lagrange.legendre import (
-    LegendreTangent as LegendreTangent,
-)
-from mechmodel.lagrange.legendre import (
-    QuadraticLegendrePair as QuadraticLegendrePair,
-)
-from mechmodel.lagrange.legendre import (
-    legendre_stationarity as legendre_stationarity,
-)
-from mechmodel.lagrange.legendre import (
-    legendre_tangent as legendre_tangent,
-)
-from mechmodel.lagrange.legendre import (
-    legendre_transform as legendre_transform,
-)
-from mechmodel.lagrange.legendre import (
-    quadratic_legendre_pair as quadratic_legendre_pair,
+    LegendreResult,
+    LegendreStationarity,
+    LegendreTangent,
+    QuadraticLegendrePair,
+    legendre_stationarity,
+    legendre_tangent,
+    legendre_transform,
+    quadratic_legendre_pair,
 )
 from mechmodel.lagrange.polar import (
-    PolarForces as PolarForces,
-)
-from mechmodel.lagrange.polar import (
-    PolarGeneralizedForces as PolarGeneralizedForces,
-)
-from mechmodel.lagrange.polar import (
-    PolarMechanics as PolarMechanics,
-)
-from mechmodel.lagrange.polar import (
-    PolarState as PolarState,
-)
-from mechmodel.lagrange.polar import (
-    euler_lagrange_residual as euler_lagrange_residual,
-)
-from mechmodel.lagrange.polar import (
-    polar_forces as polar_forces,
-)
-from mechmodel.lagrange.polar import (
-    polar_generalized_forces as polar_generalized_forces,
-)
-from mechmodel.lagrange.polar import (
-    polar_hamiltonian as polar_hamiltonian,
-)
-from mechmodel.lagrange.polar import (
-    polar_inverse_metric as polar_inverse_metric,
-)
-from mechmodel.lagrange.polar import (
-    polar_jacobian as polar_jacobian,
-)
-from mechmodel.lagrange.polar import (
-    polar_kajobian as polar_kajobian,
-)
-from mechmodel.lagrange.polar import (
-    polar_lagrangian as polar_lagrangian,
-)
-from mechmodel.lagrange.polar import (
-    polar_mechanics as polar_mechanics,
-)
-from mechmodel.lagrange.polar import (
-    polar_metric as polar_metric,
-)
-from mechmodel.lagrange.polar import (
-    polar_state as polar_state,
-)
-from mechmodel.lagrange.polar import (
-    polar_terms as polar_terms,
+    PolarForces,
+    PolarGeneralizedForces,
+    PolarMechanics,
+    PolarState,
+    euler_lagrange_residual,
+    polar_forces,
+    polar_generalized_forces,
+    polar_hamiltonian,
+    polar_inverse_metric,
+    polar_jacobian,
+    polar_kajobian,
+    polar_lagrangian,
+    polar_mechanics,
+    polar_metric,
+    polar_state,
+    polar_terms,
 )
 from mechmodel.lagrange.projectiles import (
-    ProjectileFamily as ProjectileFamily,
+    ProjectileFamily,
+    contact_distance,
+    contact_point,
+    contact_tangent,
+    envelope_by_maximum,
+    envelope_height,
+    generating_angle_derivative,
+    generating_solution,
+    projectile_family,
+    trajectory_height,
+    trajectory_position,
 )
-from mechmodel.lagrange.projectiles import (
-    contact_distance as contact_distance,
-)
-from mechmodel.lagrange.projectiles import (
-    contact_point as contact_point,
-)
-from mechmodel.lagrange.projectiles import (
-    contact_tangent as contact_tangent,
-)
-from mechmodel.lagrange.projectiles import (
-    envelope_by_maximum as envelope_by_maximum,
-)
-from mechmodel.lagrange.projectiles import (
-    envelope_height as envelope_height,
-)
-from mechmodel.lagrange.projectiles import (
-    generating_angle_derivative as generating_angle_derivative,
-)
-from mechmodel.lagrange.projectiles import (
-    generating_solution as generating_solution,
-)
-from mechmodel.lagrange.projectiles import (
-    projectile_family as projectile_family,
-)
-from mechmodel.lagrange.projectiles import (
-    trajectory_height as trajectory_height,
-)
-from mechmodel.lagrange.projectiles import (
-    trajectory_position as trajectory_position,
-)
+
+__all__ = [
+    "CoordinateHamiltonian",
+    "EllipseRadii",
+    "EllipseSlopes",
+    "LegendreResult",
+    "LegendreStationarity",
+    "LegendreTangent",
+    "OscillatorPaths",
+    "PhaseFactorParts",
+    "PolarForces",
+    "PolarGeneralizedForces",
+    "PolarMechanics",
+    "PolarState",
+    "ProjectileFamily",
+    "QuadraticExtremum",
+    "QuadraticLegendrePair",
+    "RootMassMaps",
+    "RootMassPowers",
+    "action_sum",
+    "angle_derivative",
+    "bohr_phase",
+    "common_speed",
+    "contact_distance",
+    "contact_point",
+    "contact_tangent",
+    "coordinate_differential",
+    "ellipse_radius_ratio",
+    "energy_ellipse_radii",
+    "envelope_by_maximum",
+    "envelope_height",
+    "estrangian",
+    "euler_lagrange_residual",
+    "generating_angle_derivative",
+    "generating_solution",
+    "gradient_potential",
+    "hamiltonian_free",
+    "hamiltonian_of_momentum",
+    "hamiltonian_of_rate",
+    "ke_ellipse_slopes",
+    "kinetic_energy",
+    "legendre_stationarity",
+    "legendre_tangent",
+    "legendre_transform",
+    "metric_kinetic_energy",
+    "momenta",
+    "oscillator_paths",
+    "palette_amplitude",
+    "palette_phase",
+    "path_action",
+    "phase_factor",
+    "phase_factor_parts",
+    "phase_turn",
+    "polar_forces",
+    "polar_generalized_forces",
+    "polar_hamiltonian",
+    "polar_inverse_metric",
+    "polar_jacobian",
+    "polar_kajobian",
+    "polar_lagrangian",
+    "polar_mechanics",
+    "polar_metric",
+    "polar_state",
+    "polar_terms",
+    "projectile_family",
+    "quadratic_extremum",
+    "quadratic_function_slope",
+    "quadratic_legendre_pair",
+    "quasi_velocities",
+    "root_mass_maps",
+    "root_mass_powers",
+    "scaled_coordinate_energy",
+    "time_derivative",
+    "trajectory_height",
+    "trajectory_position",
+    "turning_sequence",
+]
