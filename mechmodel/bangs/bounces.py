@@ -12,17 +12,17 @@ Fig. 4.5b. Exact with ``Fraction`` inputs. Collisions come from ``mechmodel.coll
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
 from decimal import Decimal
-from typing import Any
+from typing import cast
 
 from mechmodel import inputs
 from mechmodel.collisions import collide
+from mechmodel.typing import Real, Vector
 
 
 # -- single bounces ----------------------------------------------------------------------------
-def floor_bounce(v: Any, restitution: Any = 1) -> Any:
+def floor_bounce(v: Real, restitution: Real = 1) -> Real:
     """Velocity of a ball after it bounces off the floor (an infinite mass at rest below it).
 
     ``v`` is the ball's velocity before (negative: falling); it leaves at ``-e v`` (Fig. 4.2a,
@@ -32,7 +32,7 @@ def floor_bounce(v: Any, restitution: Any = 1) -> Any:
     return collide(math.inf, 1, 0, v, restitution).v2
 
 
-def ceiling_bounce(v: Any, restitution: Any = 1) -> Any:
+def ceiling_bounce(v: Real, restitution: Real = 1) -> Real:
     """Velocity of a ball after it bounces off the ceiling (an infinite mass at rest above it).
 
     ``v`` is the ball's velocity before (positive: rising); it leaves at ``-e v`` (Bang-3(20) of
@@ -42,7 +42,7 @@ def ceiling_bounce(v: Any, restitution: Any = 1) -> Any:
     return collide(1, math.inf, v, 0, restitution).v1
 
 
-def floor_impulse(m: Any, v: Any, restitution: Any = 1) -> Any:
+def floor_impulse(m: Real, v: Real, restitution: Real = 1) -> Real:
     """Size of the momentum a ball of mass ``m`` arriving at velocity ``v`` gives the floor.
 
     The ball's momentum changes from m v to m v', so the floor (Earth) absorbs m (v - v'),
@@ -50,10 +50,10 @@ def floor_impulse(m: Any, v: Any, restitution: Any = 1) -> Any:
     the discussion of Fig. 4.2a. Units of m v.
     """
     inputs.mass(m, "m")
-    return abs(m * (v - floor_bounce(v, restitution)))
+    return cast(Real, abs(m * (v - floor_bounce(v, restitution))))  # abs of a Real union
 
 
-def bounce_impulse(m: Any, speed: Any, restitution: Any = 1) -> Any:
+def bounce_impulse(m: Real, speed: Real, restitution: Real = 1) -> Real:
     """Size of the momentum the floor (the Earth) absorbs from a ball of mass ``m`` that hits it
     at ``speed`` >= 0, arriving with velocity -speed (point I0 of Fig. 4.2a): ``floor_impulse``
     of that arrival, 2 m V0 for an elastic bounce and m V0 for a Ka-runch."""
@@ -67,11 +67,11 @@ def bounce_impulse(m: Any, speed: Any, restitution: Any = 1) -> Any:
 class BangChanges:
     """What one elastic bang between the balls changes: momentum and kinetic energy (ICM)."""
 
-    momentum_change: Any
-    energy_change: Any
+    momentum_change: Real
+    energy_change: Real
 
 
-def bang_changes(m1: Any, m2: Any, v1: Any, v2: Any) -> BangChanges:
+def bang_changes(m1: Real, m2: Real, v1: Real, v2: Real) -> BangChanges:
     """Changes of total momentum and kinetic energy in one elastic ball bang: both zero.
 
     The independent collision model (Fig. 4.4) finds each bang's two final velocities from the
@@ -81,7 +81,7 @@ def bang_changes(m1: Any, m2: Any, v1: Any, v2: Any) -> BangChanges:
     return BangChanges(hit.momentum - (m1 * v1 + m2 * v2), hit.ke_after - hit.ke_before)
 
 
-def mass_ratio(m1: Any, m2: Any) -> Any:
+def mass_ratio(m1: Real, m2: Real) -> Real:
     """The mass ratio m1/m2 (the 7/1 of the X2 superball and pen, the 49 of Fig. 5.1)."""
     inputs.mass(m1, "m1")
     inputs.mass(m2, "m2")
@@ -98,24 +98,24 @@ class X2Launch:
     which they move at ``v1`` and ``v2``. ``m1`` may be infinite (the INF point I of Fig. 4.5b).
     """
 
-    masses: tuple[Any, Any]
-    drop_speed: Any
-    start: tuple[Any, Any]
-    v1: Any
-    v2: Any
+    masses: tuple[Real, Real]
+    drop_speed: Real
+    start: tuple[Real, Real]
+    v1: Real
+    v2: Real
 
     @property
-    def speed_ratio(self) -> Any:
+    def speed_ratio(self) -> Real:
         """Launch speed of ball 2 over the drop speed, v2/v0 (3 at infinite m1/m2)."""
         return self.v2 / self.drop_speed
 
     @property
-    def height_ratio(self) -> Any:
+    def height_ratio(self) -> Real:
         """Height ball 2 rises to over the drop height: (v2/v0)^2, since h = v^2 / 2g."""
         return self.speed_ratio**2
 
     @property
-    def energy_transfer(self) -> Any:
+    def energy_transfer(self) -> Real:
         """Share of the total kinetic energy that ball 2 carries away (1 at the M point)."""
         m1, m2 = self.masses
         inputs.mass(m1, "m1")
@@ -123,7 +123,7 @@ class X2Launch:
         return m2 * self.v2**2 / total
 
 
-def x2_launch(m1: Any, m2: Any, v0: Any = 1) -> X2Launch:
+def x2_launch(m1: Real, m2: Real, v0: Real = 1) -> X2Launch:
     """The two bangs of the X2 launcher (Fig. 4.4, 4.5) for drop speed ``v0`` > 0.
 
     ``m1`` may be ``math.inf``: ball 2 then leaves at 3 v0 (the INF point I of Fig. 4.5b).
@@ -136,7 +136,7 @@ def x2_launch(m1: Any, m2: Any, v0: Any = 1) -> X2Launch:
     return X2Launch((m1, m2), v0, (up, -v0), hit.v1, hit.v2)
 
 
-def x2_infinite_ratio_launch(v0: Any = 1) -> X2Launch:
+def x2_infinite_ratio_launch(v0: Real = 1) -> X2Launch:
     """The X2 launch in the limit m1/m2 -> infinity (the INF point I of Fig. 4.5b).
 
     Ball 1 is then an unmovable wall moving up at v0, off which ball 2 rebounds at 3 v0.
@@ -144,7 +144,7 @@ def x2_infinite_ratio_launch(v0: Any = 1) -> X2Launch:
     return x2_launch(math.inf, 1, v0)
 
 
-def x2_full_transfer_ratio(v0: Any = 1) -> Any:
+def x2_full_transfer_ratio(v0: Real = 1) -> Real:
     """The mass ratio m1/m2 at which the X2 bang stops ball 1 (the M point of Fig. 4.5b).
 
     After the floor bounce (v0, -v0), (m1 + m2) v1' = (m1 - m2) v0 - 2 m2 v0 is linear in the
@@ -153,14 +153,14 @@ def x2_full_transfer_ratio(v0: Any = 1) -> Any:
     """
     inputs.positive(v0, "v0")
 
-    def scaled_v1(r: Any) -> Any:
+    def scaled_v1(r: Real) -> Real:
         return (r + 1) * x2_launch(r, 1, v0).v1
 
     slope = scaled_v1(2) - scaled_v1(1)
     return -(scaled_v1(1) - slope) / slope
 
 
-def x2_final_locus_angle(v0: Any, ratios: Sequence[Any]) -> float:
+def x2_final_locus_angle(v0: Real, ratios: Vector) -> float:
     """Inclination (radians) of the line through the X2 final points of two mass ratios.
 
     Every elastic final point (v1, v2) has v2 - v1 = 2 v0 (the relative velocity reverses), so
@@ -176,13 +176,13 @@ def x2_final_locus_angle(v0: Any, ratios: Sequence[Any]) -> float:
 class ShiftedCollision:
     """A collision seen after a Galileo boost and a change of speed scale (Fig. 4.5b, U line)."""
 
-    before: tuple[Any, Any]
-    after: tuple[Any, Any]
-    energy_transfer: Any
+    before: tuple[Real, Real]
+    after: tuple[Real, Real]
+    energy_transfer: Real
 
 
 def galileo_shifted_collision(
-    m1: Any, m2: Any, v1: Any, v2: Any, boost: Any = 0, scale: Any = 1
+    m1: Real, m2: Real, v1: Real, v2: Real, boost: Real = 0, scale: Real = 1
 ) -> ShiftedCollision:
     """Collide after boosting both velocities by ``boost`` and scaling them by ``scale``.
 
@@ -208,16 +208,16 @@ def galileo_shifted_collision(
 class EarthRecoil:
     """What the Earth (mass M) takes from a ball (mass m) bouncing off it (Fig. 4.2a)."""
 
-    ball_mass: Any
-    earth_mass: Any
+    ball_mass: Real
+    earth_mass: Real
 
     @property
-    def mass_fraction(self) -> Any:
+    def mass_fraction(self) -> Real:
         """The fraction m/M, ratio of the Earth's COM velocity to the ball's speed."""
         return self.ball_mass / self.earth_mass
 
     @property
-    def energy_fraction(self) -> Any:
+    def energy_fraction(self) -> Real:
         """Kinetic energy of the Earth in the COM frame over the ball's, m M / (m + M)^2.
 
         In the COM frame the Earth moves at V_COM = m V0 / (m + M); (1/2) M V_COM^2 over
@@ -227,14 +227,14 @@ class EarthRecoil:
         return m * big / (m + big) ** 2
 
 
-def earth_recoil(m: Any, earth_mass: Any) -> EarthRecoil:
+def earth_recoil(m: Real, earth_mass: Real) -> EarthRecoil:
     """The Earth's share of a bounce of a ball of mass ``m`` (kg) off the Earth (kg)."""
     inputs.mass(m, "m")
     inputs.mass(earth_mass, "earth_mass")
     return EarthRecoil(m, earth_mass)
 
 
-def sagitta_small_spot_depth(spot_radius: Any, ball_radius: Any) -> Any:
+def sagitta_small_spot_depth(spot_radius: Real, ball_radius: Real) -> Real:
     """Depth d of a flat spot of radius r on a ball of radius R to leading order in r/R: the
     saggital approximation of Fig. 4.1.
 
@@ -247,7 +247,7 @@ def sagitta_small_spot_depth(spot_radius: Any, ball_radius: Any) -> Any:
     return r * r / (big + big)
 
 
-def figures_of_agreement(approximations: Sequence[Any], precise: Sequence[Any]) -> int:
+def figures_of_agreement(approximations: Vector, precise: Vector) -> int:
     """How many significant figures every approximation agrees with its precise value.
 
     The largest n such that each precise value rounded to n significant figures equals the
@@ -256,7 +256,7 @@ def figures_of_agreement(approximations: Sequence[Any], precise: Sequence[Any]) 
     if len(approximations) != len(precise) or not precise:
         raise ValueError("give one precise value per approximation")
 
-    def agreeing(approx: Any, exact: Any) -> int:
+    def agreeing(approx: Real, exact: Real) -> int:
         a, p = Decimal(repr(float(approx))), Decimal(repr(float(exact)))
         if a <= 0 or p <= 0:
             raise ValueError("values must be positive")

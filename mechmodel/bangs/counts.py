@@ -16,7 +16,7 @@ from typing import Any
 
 from mechmodel import inputs
 from mechmodel.bangs.sequences import BALLS, CEILING, BangKind, ceiling_sequence
-from mechmodel.typing import not_monotonic
+from mechmodel.typing import Real, not_monotonic
 
 # -- the rotation picture: counts and states in O(1) (chapter 5) -------------------------------
 # In mass-scaled velocities V = (v1 sqrt(m1), v2 sqrt(m2)) (5.6) both bangs are reflections that
@@ -47,12 +47,12 @@ class BangCount:
         return self.ball_bangs + self.ceiling_bangs
 
 
-def _angles(m1: Any, m2: Any, v1: Any, v2: Any, *, precise: bool) -> tuple[Any, Any]:
+def _angles(m1: Real, m2: Real, v1: Real, v2: Real, *, precise: bool) -> tuple[Real, Real]:
     """(phi, alpha): the collision line's angle and the state's polar angle in V space."""
     if precise:
         import mpmath
 
-        def to_mp(x: Any) -> Any:
+        def to_mp(x: Any) -> Any:  # a Real or an mpmath number (mpmath is untyped)
             return (
                 mpmath.mpf(x.numerator) / x.denominator
                 if hasattr(x, "denominator")
@@ -68,7 +68,7 @@ def _angles(m1: Any, m2: Any, v1: Any, v2: Any, *, precise: bool) -> tuple[Any, 
 
 
 @not_monotonic
-def bang_count(m1: Any, m2: Any, v1: Any, v2: Any) -> BangCount:
+def bang_count(m1: Real, m2: Real, v1: Real, v2: Real) -> BangCount:
     """How many bangs ``ceiling_sequence`` makes, in O(1): no bang is simulated.
 
     The rotation picture (5.12)-(5.13) of the comment above. Where a count's boundary falls
@@ -102,7 +102,7 @@ def bang_count(m1: Any, m2: Any, v1: Any, v2: Any) -> BangCount:
     return BangCount(balls, sequence.count - balls, first)
 
 
-def _exact(x: Any) -> Any:
+def _exact(x: Real) -> Real:
     """The exact rational value of an int, float, Fraction or Decimal; other numbers as given."""
     try:
         return Fraction(x)
@@ -111,7 +111,7 @@ def _exact(x: Any) -> Any:
 
 
 def _count_at(
-    m1: Any, m2: Any, v1: Any, v2: Any, *, precise: bool, digits: int
+    m1: Real, m2: Real, v1: Real, v2: Real, *, precise: bool, digits: int
 ) -> BangCount | None:
     """The counts at float or mpmath precision, or None if a boundary is too close to call."""
     import mpmath
@@ -124,6 +124,7 @@ def _count_at(
         # which bang comes first is decided on the velocities themselves, exactly: the angles
         # of a state on a boundary (v1 = v2, v2 = 0) can round to either side
         ceiling_first = 0
+        first: BangKind
         if v1 > v2:
             first, start = BALLS, alpha
         elif v2 > 0:
@@ -142,7 +143,7 @@ def _count_at(
         return BangCount(balls, max(0, ceilings) + ceiling_first, first)
 
 
-def state_after_bangs(m1: Any, m2: Any, v1: Any, v2: Any, n: Any) -> tuple[float, float]:
+def state_after_bangs(m1: Real, m2: Real, v1: Real, v2: Real, n: int) -> tuple[float, float]:
     """(v1, v2) after the first ``n`` bangs of ``ceiling_sequence``, in O(1) (floats).
 
     Each ball bang reflects the V-space angle across phi (alpha -> 2 phi - alpha), each ceiling

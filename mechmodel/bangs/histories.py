@@ -10,13 +10,12 @@ units of the inputs (the book's scaled units); exact with ``Fraction`` inputs.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.bangs.bounces import ceiling_bounce, floor_bounce
 from mechmodel.bangs.sequences import BALLS, CEILING, FLOOR, BangKind
 from mechmodel.collisions import collide
-from mechmodel.typing import not_monotonic
+from mechmodel.typing import Real, not_monotonic
 
 
 # -- space-time histories (Fig. 4.6, 4.7, 4.11, 4.12) ----------------------------------------
@@ -30,11 +29,11 @@ class Event:
 
     number: int
     kind: BangKind
-    time: Any
-    y1: Any
-    y2: Any
-    v1: Any
-    v2: Any
+    time: Real
+    y1: Real
+    y2: Real
+    v1: Real
+    v2: Real
 
 
 @dataclass(frozen=True)
@@ -45,8 +44,8 @@ class History:
     history stopped at ``max_bangs``.
     """
 
-    masses: tuple[Any, Any]
-    start: tuple[Any, Any, Any, Any]
+    masses: tuple[Real, Real]
+    start: tuple[Real, Real, Real, Real]
     bangs: tuple[Event, ...]
     ended: bool
 
@@ -74,13 +73,13 @@ class History:
         """Numbers of the ceiling bangs (02) of ball 2: Bang-3, 5, 8 in Fig. 4.7."""
         return self.numbers(CEILING)
 
-    def positions_at(self, t: Any) -> tuple[Any, Any]:
+    def positions_at(self, t: Real) -> tuple[Real, Real]:
         """Heights (y1, y2) at time ``t`` >= 0 (the space-time paths between bangs)."""
         inputs.real(t, "t")
         if t < 0:
             raise ValueError("t must be >= 0")
         y1, y2, v1, v2 = self.start
-        t0: Any = 0
+        t0: Real = 0
         for e in self.bangs:
             if e.time > t:
                 break
@@ -90,14 +89,14 @@ class History:
 
 @not_monotonic
 def bang_history(
-    m1: Any,
-    m2: Any,
-    y1: Any,
-    y2: Any,
-    v1: Any,
-    v2: Any,
-    ceiling: Any = None,
-    floor: Any = 0,
+    m1: Real,
+    m2: Real,
+    y1: Real,
+    y2: Real,
+    v1: Real,
+    v2: Real,
+    ceiling: Real | None = None,
+    floor: Real | None = 0,
     floor_bounces: int | None = None,
     max_bangs: int = 1000,
 ) -> History:
@@ -129,14 +128,14 @@ def bang_history(
     if ceiling is not None and y2 > ceiling:
         raise ValueError("ball 2 must start on or below the ceiling")
 
-    t: Any = 0
+    t: Real = 0
     a, b, u, w = y1, y2, v1, v2
     bangs: list[Event] = []
     bounces = 0
     while len(bangs) < limit:
         floor_open = floor is None or (floor_bounces is not None and bounces >= floor_bounces)
-        waits: list[tuple[Any, BangKind]] = []
-        if not floor_open and u < 0:
+        waits: list[tuple[Real, BangKind]] = []
+        if floor is not None and not floor_open and u < 0:
             waits.append(((a - floor) / -u, FLOOR))
         if u > w:
             waits.append(((b - a) / (u - w), BALLS))
@@ -148,6 +147,7 @@ def bang_history(
         t = t + dt
         a, b = a + u * dt, b + w * dt
         if kind == FLOOR:
+            assert floor is not None  # a floor bang needs a floor
             a, u = floor, floor_bounce(u)
             bounces += 1
         elif kind == BALLS:
@@ -155,6 +155,7 @@ def bang_history(
             hit = collide(m1, m2, u, w)
             u, w = hit.v1, hit.v2
         else:
+            assert ceiling is not None  # a ceiling bang needs a ceiling
             b, w = ceiling, ceiling_bounce(w)
         bangs.append(Event(len(bangs) + 1, kind, t, a, b, u, w))
     return History((m1, m2), (y1, y2, v1, v2), tuple(bangs), False)

@@ -12,15 +12,17 @@ Velocities positive up, in the units of the inputs; exact with ``Fraction`` inpu
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Final, Literal
 
 from mechmodel import inputs
 from mechmodel.bangs.bounces import ceiling_bounce
 from mechmodel.collisions import collide
-from mechmodel.typing import not_monotonic
+from mechmodel.typing import Real, not_monotonic
 
 BangKind = Literal["01", "12", "02"]
-FLOOR, BALLS, CEILING = "01", "12", "02"
+FLOOR: Final = "01"
+BALLS: Final = "12"
+CEILING: Final = "02"
 
 
 # -- velocity-only sequences under a ceiling (Fig. 5.1) ---------------------------------------
@@ -30,15 +32,15 @@ class Bang:
     velocities (v1, v2) just after it."""
 
     kind: BangKind
-    v1: Any
-    v2: Any
+    v1: Real
+    v2: Real
 
 
 @dataclass(frozen=True)
 class BangSequence:
     """A sequence of bangs from a starting state to the last possible bang."""
 
-    start: tuple[Any, Any]
+    start: tuple[Real, Real]
     bangs: tuple[Bang, ...]
 
     @property
@@ -47,12 +49,12 @@ class BangSequence:
         return len(self.bangs)
 
     @property
-    def velocities(self) -> tuple[tuple[Any, Any], ...]:
+    def velocities(self) -> tuple[tuple[Real, Real], ...]:
         """``velocities[k]`` is (v1, v2) after k bangs; ``velocities[0]`` is the start."""
         return (self.start, *((b.v1, b.v2) for b in self.bangs))
 
 
-def bang_possible(v1: Any, v2: Any, *, floor: bool = False, ceiling: bool = True) -> bool:
+def bang_possible(v1: Real, v2: Real, *, floor: bool = False, ceiling: bool = True) -> bool:
     """Whether another bang can still happen to balls moving at (v1, v2).
 
     Ball 1 catches ball 2 if v1 > v2; ball 2 reaches a ceiling if it rises (v2 > 0); ball 1
@@ -64,7 +66,7 @@ def bang_possible(v1: Any, v2: Any, *, floor: bool = False, ceiling: bool = True
     return v1 > v2 or (ceiling and v2 > 0) or (floor and v1 < 0)
 
 
-def ceiling_sequence(m1: Any, m2: Any, v1: Any, v2: Any) -> BangSequence:
+def ceiling_sequence(m1: Real, m2: Real, v1: Real, v2: Real) -> BangSequence:
     """Bangs of ball 1 against ball 2 and of ball 2 against the ceiling, until neither can occur.
 
     Fig. 5.1 and (5.4): from (v1, v2) the balls collide when ball 1 gains on ball 2 (v1 > v2), and
@@ -91,7 +93,7 @@ def ceiling_sequence(m1: Any, m2: Any, v1: Any, v2: Any) -> BangSequence:
     return BangSequence((v1, v2), tuple(bangs))
 
 
-def velocities_after_bang(m1: Any, m2: Any, v1: Any, v2: Any, bang: int) -> tuple[Any, Any]:
+def velocities_after_bang(m1: Real, m2: Real, v1: Real, v2: Real, bang: int) -> tuple[Real, Real]:
     """(v1, v2) just after Bang-``bang`` of the book's numbering for Fig. 5.1.
 
     Bang-1 is the floor bounce F that left the balls at (v1, v2) = (1, -1) in (5.13); the ball
@@ -106,7 +108,7 @@ def velocities_after_bang(m1: Any, m2: Any, v1: Any, v2: Any, bang: int) -> tupl
 
 
 @not_monotonic
-def game_over_bang(m1: Any, m2: Any, v1: Any, v2: Any) -> int:
+def game_over_bang(m1: Real, m2: Real, v1: Real, v2: Real) -> int:
     """The number of the last bang of Fig. 5.1's sequence, counting the floor bounce as Bang-1.
 
     Without a second floor bounce the sequence (C M)^p ends when no bang can occur (5.13):
