@@ -24,7 +24,7 @@ from mechmodel import inputs
 from mechmodel.collisions import Collision, collide
 from mechmodel.contact import SoftCollision, soft_collision
 from mechmodel.ellipse import kinetic_energy, velocity_radius
-from mechmodel.typing import Real, Vector
+from mechmodel.typing import Real, Symbolic, Vector
 
 
 @dataclass(frozen=True)
@@ -255,7 +255,7 @@ def min_energy_retention(m1: Real, m2: Real) -> Real:
     return after / before
 
 
-def min_retention_velocity_ratio(m1: Real, m2: Real) -> Real:
+def min_retention_velocity_ratio(m1: Symbolic, m2: Symbolic) -> Symbolic:
     """V_COM / V_IN for the start (V_IN, -V_IN): the common velocity of the totally inelastic
     collision over the initial speed ((8.6a)), from ``collide`` with restitution 0."""
     inputs.mass(m1, "m1")
