@@ -18,10 +18,9 @@ inputs that are perfect squares and are floats otherwise.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+from typing import cast
 
 from mechmodel import inputs
 from mechmodel.ellipse import EnergyEllipse, kinetic_energy
@@ -29,51 +28,53 @@ from mechmodel.ellipse import ellipse_radii as ellipse_radii  # the catalog's co
 from mechmodel.ellipse import energy_ellipse as energy_ellipse
 from mechmodel.numeric import line_angle as line_angle
 from mechmodel.numeric import line_slope as line_slope
+from mechmodel.typing import Matrix, Real, Symbolic, Vector
 
 
 @dataclass(frozen=True)
 class Collision:
     """A two-body collision: masses, velocities before and after.
 
-    ``momentum``, ``ke_before``, ``ke_after``, ``ke_lost`` need finite masses.
+    ``momentum``, ``ke_before``, ``ke_after``, ``ke_lost`` need finite masses. The masses, and
+    so the velocities after, may be sympy symbols (the collision matrix (5.1b) as a formula).
     """
 
-    masses: tuple[Any, Any]
-    before: tuple[Any, Any]
-    after: tuple[Any, Any]
+    masses: tuple[Symbolic, Symbolic]
+    before: tuple[Real, Real]
+    after: tuple[Symbolic, Symbolic]
 
     @property
-    def v1(self) -> Any:
+    def v1(self) -> Symbolic:
         """Velocity of body 1 after the collision."""
         return self.after[0]
 
     @property
-    def v2(self) -> Any:
+    def v2(self) -> Symbolic:
         """Velocity of body 2 after the collision."""
         return self.after[1]
 
     @property
-    def momentum(self) -> Any:
+    def momentum(self) -> Real:
         """Total momentum m1 v1 + m2 v2 (the same before and after, eq. (2.5a))."""
         return momentum(self.masses, self.after)
 
     @property
-    def ke_before(self) -> Any:
+    def ke_before(self) -> Real:
         """Total kinetic energy before, sum of 1/2 m v^2 (eq. (3.5b))."""
         return kinetic_energy(self.masses, self.before)
 
     @property
-    def ke_after(self) -> Any:
+    def ke_after(self) -> Real:
         """Total kinetic energy after the collision."""
         return kinetic_energy(self.masses, self.after)
 
     @property
-    def ke_lost(self) -> Any:
+    def ke_lost(self) -> Real:
         """Kinetic energy lost to crumpling (zero when elastic)."""
         return self.ke_before - self.ke_after
 
     @property
-    def com_velocity(self) -> Any:
+    def com_velocity(self) -> Real:
         """Velocity V_COM of the centre of momentum (2.5b), the same before and after.
 
         With an infinite mass (a wall) it is the wall's velocity.
@@ -86,7 +87,7 @@ class Collision:
         return center_of_mass_velocity(self.masses, self.before)
 
 
-def collide(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any = 1) -> Collision:
+def collide(m1: Symbolic, m2: Symbolic, v1: Real, v2: Real, restitution: Real = 1) -> Collision:
     """Collide body 1 (mass ``m1``, velocity ``v1``) with body 2 in one dimension.
 
     Momentum is conserved and the relative velocity reverses, scaled by the restitution ``e``:
@@ -121,19 +122,19 @@ def collide(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any = 1) -> Collisi
     return Collision((m1, m2), (v1, v2), after)
 
 
-def momentum(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
+def momentum(masses: Vector, velocities: Vector) -> Real:
     """Total momentum P = sum m v (eq. (2.5a)); finite masses only."""
     return sum(m * v for m, v in inputs.bodies(masses, velocities))
 
 
-def kinetic_energy_change(m: Any, v_in: Any, v_fin: Any) -> Any:
+def kinetic_energy_change(m: Real, v_in: Real, v_fin: Real) -> Real:
     """Change KE(v_fin) - KE(v_in) of the kinetic energy of one body of mass ``m`` whose velocity
     goes from ``v_in`` to ``v_fin`` (finite mass): the work done on it, which is what the product
     (3.3)·(3.4) of its momentum change and its IN-FIN average velocity multiplies out to."""
     return kinetic_energy((m,), (v_fin,)) - kinetic_energy((m,), (v_in,))
 
 
-def center_of_mass_velocity(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
+def center_of_mass_velocity(masses: Vector, velocities: Vector) -> Real:
     """Velocity of the centre of momentum, V_COM = sum m v / sum m (eq. (2.5b))."""
     pairs = inputs.bodies(masses, velocities)
     return sum(m * v for m, v in pairs) / sum(m for m, _ in pairs)
@@ -142,7 +143,7 @@ def center_of_mass_velocity(masses: Sequence[Any], velocities: Sequence[Any]) ->
 # -- momentum: totals, the zero-sum exchange and the momentum line (chapter 2) ----------------
 
 
-def total_mass(masses: Sequence[Any]) -> Any:
+def total_mass(masses: Vector) -> Real:
     """Total mass M_TOTAL = sum m of the bodies that may crunch into one hunk (Fig. 2.1, (2.5a))."""
     if not masses:
         raise ValueError("give at least one mass")
@@ -151,7 +152,7 @@ def total_mass(masses: Sequence[Any]) -> Any:
     return sum(masses)
 
 
-def momentum_change(masses: Sequence[Any], before: Sequence[Any], after: Sequence[Any]) -> Any:
+def momentum_change(masses: Vector, before: Vector, after: Vector) -> Real:
     """Change of total momentum, Delta P_Total = P(after) - P(before) (2.3), (3.2).
 
     Zero for any collision (the zero-sum game); applied to printed IN and FIN points it checks
@@ -160,14 +161,14 @@ def momentum_change(masses: Sequence[Any], before: Sequence[Any], after: Sequenc
     return momentum(masses, after) - momentum(masses, before)
 
 
-def momentum_line_slope(m1: Any, m2: Any) -> Any:
+def momentum_line_slope(m1: Real, m2: Real) -> Real:
     """Slope dV2/dV1 = -m1/m2 of the momentum line in the (V1, V2) plane ((2.4), (3.6b))."""
     inputs.mass(m1, "m1")
     inputs.mass(m2, "m2")
     return -m1 / m2
 
 
-def momentum_exchange_step(m1: Any, m2: Any) -> tuple[Any, Any]:
+def momentum_exchange_step(m1: Real, m2: Real) -> tuple[Real, Real]:
     """A velocity change (Delta V1, Delta V2) = (-m2, m1) that keeps P = m1 V1 + m2 V2.
 
     Body 1 loses m2 units of velocity for every m1 units body 2 gains (the zero-sum rule (2.3));
@@ -178,7 +179,7 @@ def momentum_exchange_step(m1: Any, m2: Any) -> tuple[Any, Any]:
     return (-m2, m1)
 
 
-def momentum_line_partner(m1: Any, m2: Any, v1: Any, v2: Any, u1: Any) -> Any:
+def momentum_line_partner(m1: Real, m2: Real, v1: Real, v2: Real, u1: Real) -> Real:
     """V2 of the point with V1 = ``u1`` on the momentum line through (v1, v2) (Fig. 2.6a).
 
     The line keeps m1 V1 + m2 V2 = m1 v1 + m2 v2, so V2 = v2 - (m1/m2)(u1 - v1); every point on
@@ -194,7 +195,7 @@ def momentum_line_partner(m1: Any, m2: Any, v1: Any, v2: Any, u1: Any) -> Any:
 # -- Galilean frames and reversal (Fig. 2.3-2.5) ------------------------------------------
 
 
-def shift_frame(velocities: Sequence[Any], frame_velocity: Any) -> tuple[Any, ...]:
+def shift_frame(velocities: Vector, frame_velocity: Real) -> tuple[Real, ...]:
     """Velocities seen from a frame moving at ``frame_velocity``: v - u (Galilean, Fig. 2.5).
 
     The cop going at u = V_COM sees the COM frame of Fig. 2.3-2.4.
@@ -206,7 +207,7 @@ def shift_frame(velocities: Sequence[Any], frame_velocity: Any) -> tuple[Any, ..
 
 
 def collide_in_frame(
-    m1: Any, m2: Any, v1: Any, v2: Any, frame_velocity: Any, restitution: Any = 1
+    m1: Real, m2: Real, v1: Real, v2: Real, frame_velocity: Real, restitution: Real = 1
 ) -> Collision:
     """The collision of ``collide`` seen from a frame moving at ``frame_velocity``.
 
@@ -240,7 +241,7 @@ def time_reversed(hit: Collision) -> Collision:
 
 
 def collide_reversed(
-    m1: Any, m2: Any, v1: Any, v2: Any, frame_velocity: Any = 0, restitution: Any = 1
+    m1: Real, m2: Real, v1: Real, v2: Real, frame_velocity: Real = 0, restitution: Real = 1
 ) -> Collision:
     """The collision that starts from the reversed incoming velocities, in a frame at u.
 
@@ -252,7 +253,7 @@ def collide_reversed(
     return collide(m1, m2, -w1, -w2, restitution)
 
 
-def elastic_final_velocity(v_in: Any, v_com: Any) -> Any:
+def elastic_final_velocity(v_in: Real, v_com: Real) -> Real:
     """Velocity after an elastic bang of a body that arrives at ``v_in`` while the centre of
     momentum moves at ``v_com`` (the (4.1), (4.3) form of the IN-FIN balance (3.4)).
 
@@ -263,7 +264,7 @@ def elastic_final_velocity(v_in: Any, v_com: Any) -> Any:
     return collide(1, math.inf, v_in, v_com).v1
 
 
-def elastic_com_velocity(v_in: Any, v_fin: Any) -> Any:
+def elastic_com_velocity(v_in: Real, v_fin: Real) -> Real:
     """Velocity V_COM of the centre of momentum of an elastic bang that takes a body from
     ``v_in`` to ``v_fin`` (the T-symmetry balance (3.4)).
 
@@ -279,7 +280,7 @@ def elastic_com_velocity(v_in: Any, v_fin: Any) -> Any:
 # -- lines, angles and the energy ellipse's form (Fig. 3.1, (3.6)-(3.7)) ----------------------
 
 
-def _sqrt(x: Any) -> Any:
+def _sqrt(x: Real) -> Real:
     """Square root of x >= 0: exact for a Fraction or int that is a perfect square."""
     if isinstance(x, int | Fraction) and not isinstance(x, bool):
         q = Fraction(x)
@@ -294,7 +295,7 @@ def _sqrt(x: Any) -> Any:
     return x**0.5
 
 
-def energy_ellipse_form(m1: Any, m2: Any, energy: Any, v1: Any, v2: Any) -> Any:
+def energy_ellipse_form(m1: Real, m2: Real, energy: Real, v1: Real, v2: Real) -> Real:
     """The left side V1^2/(2 KE/m1) + V2^2/(2 KE/m2) of the KE ellipse (3.7a) at the point
     (v1, v2): the kinetic energy of that point over ``energy`` = KE > 0, so 1 on the ellipse,
     less inside it and more outside."""
@@ -311,17 +312,17 @@ class ComFrame:
     any collision can lose (the ECOM of (3.8)).
     """
 
-    masses: tuple[Any, Any]
-    com_velocity: Any
-    velocities: tuple[Any, Any]
+    masses: tuple[Real, Real]
+    com_velocity: Real
+    velocities: tuple[Real, Real]
 
     @property
-    def speeds(self) -> tuple[Any, Any]:
+    def speeds(self) -> tuple[Real, Real]:
         """Speeds |v - V_COM| of the two bodies in the COM frame."""
-        return (abs(self.velocities[0]), abs(self.velocities[1]))
+        return (cast(Real, abs(self.velocities[0])), cast(Real, abs(self.velocities[1])))
 
     @property
-    def energy(self) -> Any:
+    def energy(self) -> Real:
         """Kinetic energy in the COM frame (3.8), the ECOM that a Ka-runch loses."""
         return kinetic_energy(self.masses, self.velocities)
 
@@ -331,7 +332,7 @@ class ComFrame:
         return EnergyEllipse(self.masses, self.velocities)
 
 
-def com_frame(m1: Any, m2: Any, v1: Any, v2: Any) -> ComFrame:
+def com_frame(m1: Real, m2: Real, v1: Real, v2: Real) -> ComFrame:
     """Bodies m1, m2 at velocities v1, v2 seen from their COM frame (Fig. 2.4, (3.8))."""
     u = center_of_mass_velocity((m1, m2), (v1, v2))
     w = shift_frame((v1, v2), u)
@@ -350,25 +351,27 @@ class PartialCollision:
     ``pass_through`` (its mirror through the COM point, the cars passing through each other).
     """
 
-    masses: tuple[Any, Any]
-    before: tuple[Any, Any]
-    energy_after: Any
-    restitution: Any
+    masses: tuple[Real, Real]
+    before: tuple[Real, Real]
+    energy_after: Real
+    restitution: Real
     rebound: Collision
     pass_through: Collision
 
     @property
-    def ke_before(self) -> Any:
+    def ke_before(self) -> Real:
         """Kinetic energy before the collision (3.5b)."""
         return kinetic_energy(self.masses, self.before)
 
     @property
-    def ke_lost(self) -> Any:
+    def ke_lost(self) -> Real:
         """Energy lost, KE before minus ``energy_after`` (the E_loss of Fig. 3.2)."""
         return self.ke_before - self.energy_after
 
 
-def collide_to_energy(m1: Any, m2: Any, v1: Any, v2: Any, energy_after: Any) -> PartialCollision:
+def collide_to_energy(
+    m1: Real, m2: Real, v1: Real, v2: Real, energy_after: Real
+) -> PartialCollision:
     """The partially inelastic collision that ends with kinetic energy ``energy_after``.
 
     The energy left is IE + e^2 E_COM, where IE = 1/2 (m1 + m2) V_COM^2 is what a Ka-runch
@@ -408,7 +411,7 @@ def collide_to_energy(m1: Any, m2: Any, v1: Any, v2: Any, energy_after: Any) -> 
 # -- tensor forms of momentum and energy ((3.9)-(3.14)) -----------------------------------
 
 
-def inertia_tensor(masses: Sequence[Any]) -> tuple[tuple[Any, ...], ...]:
+def inertia_tensor(masses: Vector) -> tuple[tuple[Real, ...], ...]:
     """The diagonal inertia matrix M of (3.9a): M_jj = m_j, M_jk = 0 for j != k."""
     for i, m in enumerate(masses):
         inputs.mass(m, f"masses[{i}]")
@@ -417,14 +420,14 @@ def inertia_tensor(masses: Sequence[Any]) -> tuple[tuple[Any, ...], ...]:
     )
 
 
-def inertia_coefficient_count(n: Any) -> int:
+def inertia_coefficient_count(n: int) -> int:
     """How many inertia coefficients M_jk a full inertia matrix of dimension ``n`` >= 1 holds
     (the upgrade of (3.9a) to (3.9b)): counted over the rows of the n x n ``inertia_tensor``."""
     size = inputs.count(n, "n", minimum=1)
     return sum(len(row) for row in inertia_tensor([1] * size))
 
 
-def _check_matrix(inertia: Sequence[Sequence[Any]], n: int) -> None:
+def _check_matrix(inertia: Matrix, n: int) -> None:
     if len(inertia) != n or any(len(row) != n for row in inertia):
         raise ValueError(f"the inertia matrix must be {n} x {n} to match the velocity vectors")
     for j, row in enumerate(inertia):
@@ -432,7 +435,7 @@ def _check_matrix(inertia: Sequence[Sequence[Any]], n: int) -> None:
             inputs.real(x, f"inertia[{j}][{k}]")
 
 
-def tensor_form(u: Sequence[Any], inertia: Sequence[Sequence[Any]], v: Sequence[Any]) -> Any:
+def tensor_form(u: Vector, inertia: Matrix, v: Vector) -> Real:
     """The tensor form u . M . v = sum_jk u_j M_jk v_k of (3.11a)-(3.12b).
 
     V_COM . M . V_IN is V_COM P_Total (3.11a); V . M . V / 2 the kinetic energy (3.12c).
@@ -446,7 +449,7 @@ def tensor_form(u: Sequence[Any], inertia: Sequence[Sequence[Any]], v: Sequence[
     return sum(u[j] * inertia[j][k] * v[k] for j in range(len(u)) for k in range(len(v)))
 
 
-def ellipse_tensor_form(x: Any, y: Any, a: Any, b: Any) -> Any:
+def ellipse_tensor_form(x: Real, y: Real, a: Real, b: Real) -> Real:
     """The tensor form r . M . r of (3.15) for r = (x, y) and the ellipse tensor
     M = diag(1/a^2, 1/b^2) of radii a, b > 0: 1 on the ellipse, as (3.7b)."""
     inputs.positive(a, "a")
@@ -466,85 +469,85 @@ class TensorForms:
     ``quarter_in - quarter_cross`` (3.14).
     """
 
-    inertia: tuple[tuple[Any, ...], ...]
-    v_in: tuple[Any, ...]
-    v_fin: tuple[Any, ...]
-    v_com: tuple[Any, ...]
+    inertia: tuple[tuple[Real, ...], ...]
+    v_in: tuple[Real, ...]
+    v_fin: tuple[Real, ...]
+    v_com: tuple[Real, ...]
 
-    def _form(self, u: Sequence[Any], v: Sequence[Any]) -> Any:
+    def _form(self, u: Vector, v: Vector) -> Real:
         return tensor_form(u, self.inertia, v)
 
     @property
-    def com_momentum(self) -> Any:
+    def com_momentum(self) -> Real:
         """V_COM . M . V_IN = V_COM P_Total (3.11a, b)."""
         return self._form(self.v_com, self.v_in)
 
     @property
-    def com_momentum_fin(self) -> Any:
+    def com_momentum_fin(self) -> Real:
         """V_COM . M . V_FIN, equal to ``com_momentum`` when momentum is conserved (3.11a)."""
         return self._form(self.v_com, self.v_fin)
 
     @property
-    def half_com_momentum(self) -> Any:
+    def half_com_momentum(self) -> Real:
         """V_COM P_Total / 2, the Ka-runch energy IE of (3.13)."""
         return self.com_momentum / 2
 
     @property
-    def cross(self) -> Any:
+    def cross(self) -> Real:
         """V_FIN . M . V_IN (3.12b)."""
         return self._form(self.v_fin, self.v_in)
 
     @property
-    def cross_transposed(self) -> Any:
+    def cross_transposed(self) -> Real:
         """V_IN . M . V_FIN, equal to ``cross`` for a transpose-symmetric M (3.12b)."""
         return self._form(self.v_in, self.v_fin)
 
     @property
-    def half_cross(self) -> Any:
+    def half_cross(self) -> Real:
         """V_FIN . M . V_IN / 2, subtracted in (3.12c)."""
         return self.cross / 2
 
     @property
-    def ke_from_com(self) -> Any:
+    def ke_from_com(self) -> Real:
         """V_COM P_Total - V_FIN . M . V_IN / 2, line 1 of (3.12a, c)."""
         return self.com_momentum - self.half_cross
 
     @property
-    def ke_in(self) -> Any:
+    def ke_in(self) -> Real:
         """Kinetic energy V_IN . M . V_IN / 2 (3.12c)."""
         return self._form(self.v_in, self.v_in) / 2
 
     @property
-    def ke_fin(self) -> Any:
+    def ke_fin(self) -> Real:
         """Kinetic energy V_FIN . M . V_FIN / 2 (3.12c)."""
         return self._form(self.v_fin, self.v_fin) / 2
 
     @property
-    def ie(self) -> Any:
+    def ie(self) -> Real:
         """Kinetic energy at the COM point, V_COM . M . V_COM / 2 (the IE of (3.13))."""
         return self._form(self.v_com, self.v_com) / 2
 
     @property
-    def quarter_in(self) -> Any:
+    def quarter_in(self) -> Real:
         """V_IN . M . V_IN / 4 (3.13)."""
         return self._form(self.v_in, self.v_in) / 4
 
     @property
-    def quarter_cross(self) -> Any:
+    def quarter_cross(self) -> Real:
         """V_FIN . M . V_IN / 4 (3.13)."""
         return self.cross / 4
 
     @property
-    def crunch(self) -> Any:
+    def crunch(self) -> Real:
         """KE - IE = V_IN.M.V_IN/4 - V_FIN.M.V_IN/4, the crunch energy (3.14)."""
         return self.quarter_in - self.quarter_cross
 
 
 def tensor_energy_forms(
-    inertia: Sequence[Sequence[Any]],
-    v_in: Sequence[Any],
-    v_fin: Sequence[Any],
-    v_com: Sequence[Any],
+    inertia: Matrix,
+    v_in: Vector,
+    v_fin: Vector,
+    v_com: Vector,
 ) -> TensorForms:
     """The tensor forms (3.11)-(3.14) of inertia matrix M (any n x n) and velocity vectors
     V_IN, V_FIN, V_COM (the book's (60, 10), (40, 90), (50, 50) for Fig. 3.1)."""
@@ -560,7 +563,9 @@ def tensor_energy_forms(
     )
 
 
-def collision_tensor_forms(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any = 1) -> TensorForms:
+def collision_tensor_forms(
+    m1: Real, m2: Real, v1: Real, v2: Real, restitution: Real = 1
+) -> TensorForms:
     """The tensor forms (3.11)-(3.14) of a two-body collision: M = diag(m1, m2) (3.9a),
     V_IN = (v1, v2), V_FIN from ``collide`` and V_COM = (V, V) at the COM velocity (2.5b).
 
@@ -574,7 +579,7 @@ def collision_tensor_forms(m1: Any, m2: Any, v1: Any, v2: Any, restitution: Any 
 # -- units ------------------------------------------------------------------------------------
 
 
-def velocity_in_si(velocity: Any, length: Any, duration: Any) -> Any:
+def velocity_in_si(velocity: Real, length: Real, duration: Real) -> Real:
     """A velocity of ``velocity`` lengths per duration, in m/s.
 
     ``length`` is the length unit in metres and ``duration`` the time unit in seconds (a foot

@@ -22,27 +22,31 @@ from __future__ import annotations
 
 import cmath
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import TypeVar, cast, overload
 
 from mechmodel import inputs
 from mechmodel.algebra import polynomial_integral
 from mechmodel.collisions import collide
 from mechmodel.numeric import complex_step_derivative, log_slope
+from mechmodel.typing import Real, Scalar, Symbolic, Vector
 
+RealOrComplex = TypeVar("RealOrComplex", Real, complex)  # complex under the complex step
 _CHEBYSHEV_NODES = 64  # Gauss-Chebyshev nodes of the period integral (exact for the harmonic well)
 
 
-def _ln(x: Any) -> Any:
+@overload
+def _ln(x: Real) -> float: ...
+@overload
+def _ln(x: complex) -> complex: ...
+def _ln(x: Scalar) -> Scalar:
     """Natural logarithm of a real or complex number (complex for the complex step)."""
     return cmath.log(x) if isinstance(x, complex) else math.log(x)
 
 
 # --- bang rate and the bounce off a moving wall, (6.1)-(6.3), Fig. 6.2 -----------------------
-
-
-def bang_period(gap: Any, speed: Any) -> Any:
+def bang_period(gap: Real, speed: Real) -> Real:
     """Time between m2's bangs on m1, s: out across the gap Y and back, 2Y / v2 (6.1a).
 
     m1 is taken as still (v1 << v2): the little ball crosses the gap twice per round trip.
@@ -55,12 +59,12 @@ def bang_period(gap: Any, speed: Any) -> Any:
     return out + back
 
 
-def bang_rate(gap: Any, speed: Any) -> Any:
+def bang_rate(gap: Real, speed: Real) -> Real:
     """Bangs per second on m1, B = 1 / period = v2 / 2Y (6.1b)."""
     return 1 / bang_period(gap, speed)
 
 
-def moving_wall_bounce(v_wall: Any, speed: Any) -> Any:
+def moving_wall_bounce(v_wall: Real, speed: Real) -> Real:
     """Speed of m2 after a head-on bang with a wall (m1 >> m2) closing at ``v_wall`` (6.2).
 
     m2 arrives at velocity -``speed``; the infinite mass keeps its velocity and m2 leaves at
@@ -71,7 +75,7 @@ def moving_wall_bounce(v_wall: Any, speed: Any) -> Any:
     return collide(math.inf, 1, v_wall, -speed).v2
 
 
-def wall_speed_gain(v_wall: Any, speed: Any) -> Any:
+def wall_speed_gain(v_wall: Real, speed: Real) -> Real:
     """Speed m2 gains per bang in units of the wall's speed, (v2FIN - v2) / v1 (6.2).
 
     The 2 of v2FIN = v2 + 2 v1 and of the monster's "twice its speed (2V1)" (Fig. 6.6a).
@@ -80,7 +84,7 @@ def wall_speed_gain(v_wall: Any, speed: Any) -> Any:
     return (moving_wall_bounce(v_wall, speed) - speed) / v_wall
 
 
-def bang_momentum_transfer(m2: Any, speed: Any, v_wall: Any) -> Any:
+def bang_momentum_transfer(m2: Real, speed: Real, v_wall: Real) -> Real:
     """Momentum one bang gives m2 (and takes from m1), kg m/s: m2 v2FIN - (-m2 v2) (6.3).
 
     = 2 m2 v2 + 2 m2 v1: the coefficients of m2 v2 and of m2 v1 are the transfers at unit
@@ -90,7 +94,7 @@ def bang_momentum_transfer(m2: Any, speed: Any, v_wall: Any) -> Any:
     return m2 * moving_wall_bounce(v_wall, speed) - (-m2 * speed)
 
 
-def speed_gain_rate(v_wall: Any, rate: Any) -> Any:
+def speed_gain_rate(v_wall: Real, rate: Real) -> Real:
     """Rate at which m2's speed grows, m/s^2: the speed one bang with the closing wall adds
     (``moving_wall_bounce``, the same whatever m2's speed) times the bangs per second, ``rate``
     (6.5a): dv2/dt = 2 v1 B."""
@@ -99,13 +103,13 @@ def speed_gain_rate(v_wall: Any, rate: Any) -> Any:
     return gain * rate
 
 
-def adiabatic_speed_growth(v_wall: Any, speed: Any, gap: Any) -> Any:
+def adiabatic_speed_growth(v_wall: Real, speed: Real, gap: Real) -> Real:
     """dv2/dt of m2 between a wall closing at ``v_wall`` and the fixed wall at gap Y, m/s^2:
     the gain per bang at the bang rate of (6.1b), 2 v1 v2 / 2Y (6.5a)-(6.5b)."""
     return speed_gain_rate(v_wall, bang_rate(gap, speed))
 
 
-def thermal_speed(mass: Any, temperature: Any, boltzmann: Any) -> float:
+def thermal_speed(mass: Real, temperature: Real, boltzmann: Real) -> float:
     """Speed of a one-dimensional gas atom of ``mass`` at ``temperature``, m/s, with the book's
     KE = k T of (6.4): 1/2 m v^2 = k T, v = sqrt(2 k T / m) (the "typical atomic speeds")."""
     inputs.mass(mass, "mass")
@@ -115,8 +119,6 @@ def thermal_speed(mass: Any, temperature: Any, boltzmann: Any) -> float:
 
 
 # --- force laws: isothermal 1/Y (6.4), adiabatic 1/Y^3 (6.5), their potentials --------------
-
-
 @dataclass(frozen=True)
 class ForceLaw:
     """A bang-force law at one gap: the force on m1 and its local powers.
@@ -127,14 +129,14 @@ class ForceLaw:
     v0 Y0); ``force_gap_per_energy`` is F Y / KE2, the 2 of F = 2 KE / Y.
     """
 
-    force: Any
+    force: Real
     inverse_power: float
     gap_exponent: float
     speed_exponent: float
-    force_gap_per_energy: Any
+    force_gap_per_energy: Real
 
 
-def _law(force: Callable[[Any, Any], Any], gap: Any, speed: Any, energy: Any) -> ForceLaw:
+def _law(force: Callable[[Real, Real], Real], gap: Real, speed: Real, energy: Real) -> ForceLaw:
     """ForceLaw of ``force(gap, speed)`` at (gap, speed); ``energy`` is m2's kinetic energy."""
     value = force(gap, speed)
     power = log_slope(lambda y: force(y, speed), gap)
@@ -147,12 +149,12 @@ def _law(force: Callable[[Any, Any], Any], gap: Any, speed: Any, energy: Any) ->
     )
 
 
-def _isothermal(m2: Any, speed: Any, gap: Any) -> Any:
+def _isothermal(m2: Real, speed: Real, gap: Real) -> Real:
     """Bang rate times momentum per bang, on a slow m1: 2 m2 v2 times v2 / 2Y."""
     return bang_momentum_transfer(m2, speed, 0) * bang_rate(gap, speed)
 
 
-def isothermal_force(m2: Any, speed: Any, gap: Any) -> ForceLaw:
+def isothermal_force(m2: Real, speed: Real, gap: Real) -> ForceLaw:
     """Isothermal bang force on m1, F = B dP = m2 v2^2 / Y (6.4), and its local powers.
 
     m2 keeps its speed v2 whatever m1 does (the ceiling's "Robin Hood" holds its energy, the
@@ -165,7 +167,7 @@ def isothermal_force(m2: Any, speed: Any, gap: Any) -> ForceLaw:
     return _law(lambda y, v: _isothermal(m2, v, y), gap, speed, energy)
 
 
-def isothermal_force_of_energy(energy: Any, gap: Any, m2: Any = 1) -> Any:
+def isothermal_force_of_energy(energy: Real, gap: Real, m2: Real = 1) -> Real:
     """Isothermal bang force on m1, N, when m2 has kinetic energy ``energy`` (6.4).
 
     m2 of any mass ``m2`` moving at the speed that gives it that energy, sqrt(2 KE / m2),
@@ -179,7 +181,7 @@ def isothermal_force_of_energy(energy: Any, gap: Any, m2: Any = 1) -> Any:
     return _isothermal(m2, speed, gap)
 
 
-def thermal_kinetic_energy(boltzmann: Any, temperature: Any) -> Any:
+def thermal_kinetic_energy(boltzmann: Real, temperature: Real) -> Real:
     """Mean kinetic energy of an atom moving in one dimension in equilibrium at temperature T,
     J: k T / 2, by equipartition (each quadratic term of the energy, here 1/2 m v^2, holds
     k T / 2 on average), with k Boltzmann's constant."""
@@ -188,7 +190,7 @@ def thermal_kinetic_energy(boltzmann: Any, temperature: Any) -> Any:
     return boltzmann * temperature / 2
 
 
-def isothermal_gas_law(boltzmann: Any, temperature: Any, gap: Any) -> Any:
+def isothermal_gas_law(boltzmann: Real, temperature: Real, gap: Real) -> Real:
     """F Y of the one-atom gas at temperature T, J: the bang force (6.4) of an atom with the
     thermal kinetic energy, times the gap; the 1-D ideal gas law P V = N k T for N = 1 (the
     product does not depend on the gap)."""
@@ -196,7 +198,7 @@ def isothermal_gas_law(boltzmann: Any, temperature: Any, gap: Any) -> Any:
     return isothermal_force_of_energy(energy, gap) * gap
 
 
-def isothermal_potential(m2: Any, speed: Any, gap: Any) -> Any:
+def isothermal_potential(m2: Real, speed: Real, gap: Real) -> Real:
     """Isothermal potential of m1, U = -m2 v2^2 ln Y (6.11), J (zero at Y = 1 unit).
 
     Its force -dU/dY = m2 v2^2 / Y is the isothermal law (6.4): see
@@ -208,19 +210,19 @@ def isothermal_potential(m2: Any, speed: Any, gap: Any) -> Any:
     return -m2 * speed * speed * _ln(gap)
 
 
-def isothermal_potential_force(m2: Any, speed: Any, gap: Any) -> ForceLaw:
+def isothermal_potential_force(m2: Real, speed: Real, gap: Real) -> ForceLaw:
     """The force -dU/dY of the isothermal potential (6.11), with its local powers."""
     inputs.mass(m2, "m2")
     inputs.positive(speed, "speed")
     inputs.positive(gap, "gap")
 
-    def force(y: Any, v: Any) -> float:
+    def force(y: Real, v: Real) -> float:
         return -complex_step_derivative(lambda g: -m2 * v * v * _ln(g), y)
 
     return _law(force, gap, speed, m2 * speed * speed / 2)
 
 
-def adiabatic_speed(v0: Any, y0: Any, gap: Any) -> Any:
+def adiabatic_speed(v0: Real, y0: Real, gap: Real) -> Real:
     """Speed of m2 once the gap has closed from Y0 to Y, adiabatic (6.5b): v2 = v0 Y0 / Y.
 
     Each bang adds 2 v1 at the rate v2 / 2Y while Y shrinks at v1 (6.5a): dv2 / v2 = -dY / Y,
@@ -232,17 +234,17 @@ def adiabatic_speed(v0: Any, y0: Any, gap: Any) -> Any:
     return v0 * y0 / gap
 
 
-def _adiabatic(m2: Any, v0: Any, y0: Any, gap: Any) -> Any:
+def _adiabatic(m2: Real, v0: Real, y0: Real, gap: Real) -> Real:
     speed = v0 * y0 / gap
     return m2 * speed * speed / gap  # the bang force m2 v2^2 / Y at the current speed
 
 
-def _adiabatic_potential(m2: Any, v0: Any, y0: Any, gap: Any) -> Any:
+def _adiabatic_potential(m2: Real, v0: Real, y0: Real, gap: RealOrComplex) -> RealOrComplex:
     speed = v0 * y0 / gap
     return m2 * speed * speed / 2  # m2's kinetic energy, lent by m1 (6.7)
 
 
-def adiabatic_force(m2: Any, v0: Any, y0: Any, gap: Any) -> ForceLaw:
+def adiabatic_force(m2: Real, v0: Real, y0: Real, gap: Real) -> ForceLaw:
     """Adiabatic bang force on m1 at gap Y, F = m2 v2^2 / Y = m2 (v0 Y0)^2 / Y^3 (6.5b).
 
     ``speed_exponent`` is the power of v0, hence of the constant v0 Y0 ("const." of (6.5b)).
@@ -252,14 +254,14 @@ def adiabatic_force(m2: Any, v0: Any, y0: Any, gap: Any) -> ForceLaw:
     return _law(lambda y, v: _adiabatic(m2, v, y0, y), gap, v0, m2 * speed * speed / 2)
 
 
-def adiabatic_potential(m2: Any, v0: Any, y0: Any, gap: Any) -> Any:
+def adiabatic_potential(m2: Real, v0: Real, y0: Real, gap: Real) -> Real:
     """m1's potential energy at gap Y, J: m2's kinetic energy 1/2 m2 (v0 Y0 / Y)^2 (6.7)."""
     inputs.mass(m2, "m2")
     adiabatic_speed(v0, y0, gap)
     return _adiabatic_potential(m2, v0, y0, gap)
 
 
-def adiabatic_potential_force(m2: Any, v0: Any, y0: Any, gap: Any) -> ForceLaw:
+def adiabatic_potential_force(m2: Real, v0: Real, y0: Real, gap: Real) -> ForceLaw:
     """The force -dU/dY of the adiabatic potential (6.7), with its local powers (6.10).
 
     "It checks!!": the slope is taken of the potential itself, and equals the bang force (6.5b).
@@ -267,13 +269,13 @@ def adiabatic_potential_force(m2: Any, v0: Any, y0: Any, gap: Any) -> ForceLaw:
     inputs.mass(m2, "m2")
     speed = adiabatic_speed(v0, y0, gap)
 
-    def force(y: Any, v: Any) -> float:
+    def force(y: Real, v: Real) -> float:
         return -complex_step_derivative(lambda g: _adiabatic_potential(m2, v, y0, g), y)
 
     return _law(force, gap, v0, m2 * speed * speed / 2)
 
 
-def kinetic_energy_factor(m2: Any, v0: Any, y0: Any, gap: Any) -> float:
+def kinetic_energy_factor(m2: Real, v0: Real, y0: Real, gap: Real) -> float:
     """The factor c that makes U = c m2 v2^2 the potential of the adiabatic bang force.
 
     Bang force (6.5b) over -d(m2 v2^2)/dY: the 1/2 of the kinetic energy that "F = -dU/dY needs"
@@ -286,8 +288,6 @@ def kinetic_energy_factor(m2: Any, v0: Any, y0: Any, gap: Any) -> float:
 
 
 # --- two gases: the oscillator (6.12), harmonic period, power-law potentials ---------------
-
-
 @dataclass(frozen=True)
 class OpposedSeries:
     """Taylor coefficients in x of the two opposed isothermal forces on m1 (before (6.12)).
@@ -299,22 +299,22 @@ class OpposedSeries:
     ``spring_per_force_constant`` is k / f = -total[1], the 2 of k = 2f.
     """
 
-    left: tuple[Any, ...]
-    right: tuple[Any, ...]
-    total: tuple[Any, ...]
-    total_magnitudes: tuple[Any, ...]
-    spring_per_force_constant: Any
+    left: tuple[Real, ...]
+    right: tuple[Real, ...]
+    total: tuple[Real, ...]
+    total_magnitudes: tuple[Real, ...]
+    spring_per_force_constant: Real
 
 
-def _reciprocal_series(gap: Any, sign: int, order: int) -> list[Any]:
+def _reciprocal_series(gap: Real, sign: int, order: int) -> list[Real]:
     """Coefficients of 1 / (gap + sign x) up to x^order: c0 = 1/gap, c_n = -sign c_(n-1)/gap."""
-    out = [1 / gap]
+    out: list[Real] = [1 / gap]
     for _ in range(order):
         out.append(-sign * out[-1] / gap)
     return out
 
 
-def opposed_isothermal_series(order: Any, gap: Any = 1) -> OpposedSeries:
+def opposed_isothermal_series(order: int, gap: Real = 1) -> OpposedSeries:
     """Expansion of F_total = f/(Y + x) - f/(Y - x) to ``order`` in x, f = 1 (before (6.12)).
 
     Only odd powers survive ("only x^2, x^4, ... terms cancel"): -2 f x / Y^2 - 2 f x^3 / Y^4 ...
@@ -327,7 +327,7 @@ def opposed_isothermal_series(order: Any, gap: Any = 1) -> OpposedSeries:
     right = _reciprocal_series(gap, -1, n)
     total = [a - b for a, b in zip(left, right, strict=True)]
     return OpposedSeries(
-        tuple(left), tuple(right), tuple(total), tuple(abs(c) for c in total), -total[1]
+        tuple(left), tuple(right), tuple(total), tuple(cast(Real, abs(c)) for c in total), -total[1]
     )
 
 
@@ -337,13 +337,13 @@ class OpposedForces:
     given order (before (6.12)): ``left`` of f / (Y + x), ``right`` of f / (Y - x) and
     ``total`` of their difference F_total, each evaluated at x (with the force constant f)."""
 
-    left: Any
-    right: Any
-    total: Any
+    left: Symbolic
+    right: Symbolic
+    total: Symbolic
 
 
 def opposed_isothermal_forces(
-    force_constant: Any, x: Any, order: Any, gap: Any = 1
+    force_constant: Symbolic, x: Symbolic, order: int, gap: Real = 1
 ) -> OpposedForces:
     """The series of ``opposed_isothermal_series`` to ``order``, times f and summed at x.
 
@@ -351,13 +351,13 @@ def opposed_isothermal_forces(
     """
     series = opposed_isothermal_series(order, gap)
 
-    def value(coefficients: Sequence[Any]) -> Any:
+    def value(coefficients: Vector) -> Symbolic:
         return sum(force_constant * c * x**k for k, c in enumerate(coefficients))
 
     return OpposedForces(value(series.left), value(series.right), value(series.total))
 
 
-def opposed_spring_constant(force_constant: Any, gap: Any) -> float:
+def opposed_spring_constant(force_constant: Real, gap: Real) -> float:
     """Spring constant of m1 between two isothermal gases of force constant f, N/m.
 
     Each side pushes with f / (its space), the left one at Y + x and the right one at Y - x;
@@ -369,7 +369,7 @@ def opposed_spring_constant(force_constant: Any, gap: Any) -> float:
     return -complex_step_derivative(lambda x: f / (gap + x) - f / (gap - x), 0)
 
 
-def isothermal_spring_constant(m2: Any, speed: Any, gap: Any) -> float:
+def isothermal_spring_constant(m2: Real, speed: Real, gap: Real) -> float:
     """Spring constant of m1 between two isothermal gases, k = -dF_total/dx at x = 0, N/m.
 
     Each side pushes with f / (its space), f = m2 v2^2 (6.11); k = 2 f / Y^2 (6.12).
@@ -380,7 +380,7 @@ def isothermal_spring_constant(m2: Any, speed: Any, gap: Any) -> float:
     return opposed_spring_constant(m2 * speed * speed, gap)
 
 
-def hooke_potential(k: Any, x: Any) -> Any:
+def hooke_potential(k: Real, x: Real) -> Real:
     """Potential of the linear force F = -k x, U = -integral_0^x F dx = k x^2 / 2 (6.12).
 
     Integrated term by term, so Fraction inputs give the exact 1/2.
@@ -390,7 +390,7 @@ def hooke_potential(k: Any, x: Any) -> Any:
     return -polynomial_integral([0, -k], x)
 
 
-def oscillation_period(mass: Any, strength: Any, power: Any, amplitude: Any) -> float:
+def oscillation_period(mass: Real, strength: Real, power: Real, amplitude: Real) -> float:
     """Period of an oscillation of amplitude A in the symmetric well U = strength |x|^power, s.
 
     T = 2 integral_{-A}^{A} dx / v(x), v = sqrt(2 (U(A) - U(x)) / m). Writing
@@ -412,7 +412,7 @@ def oscillation_period(mass: Any, strength: Any, power: Any, amplitude: Any) -> 
     return 2 * math.pi / n * math.fsum(terms)
 
 
-def harmonic_period(omega: Any) -> float:
+def harmonic_period(omega: Real) -> float:
     """Period of the harmonic oscillator of angular frequency omega, s (after (6.12)).
 
     A unit mass on the spring k = omega^2: the turning-point integral of
@@ -432,20 +432,20 @@ class PowerLawPotential:
     check: it equals k y^p); ``logarithmic`` is True for p = -1.
     """
 
-    potential: Any
+    potential: Real
     exponent: float
     exponent_gain: float
     force: float
     logarithmic: bool
 
 
-def _power_potential(k: Any, p: Any, y: Any) -> Any:
+def _power_potential(k: Real, p: Real, y: RealOrComplex) -> RealOrComplex:
     if p == -1:
         return -k * _ln(y)
     return -k * y ** (p + 1) / (p + 1)
 
 
-def power_law_potential(strength: Any, power: Any, y: Any) -> PowerLawPotential:
+def power_law_potential(strength: Real, power: Real, y: Real) -> PowerLawPotential:
     """Potential of the force F = strength y^power at y > 0 (the list after (6.12))."""
     inputs.real(strength, "strength")
     inputs.real(power, "power")
@@ -461,18 +461,16 @@ def power_law_potential(strength: Any, power: Any, y: Any) -> PowerLawPotential:
 
 
 # --- the toss (6.13) --------------------------------------------------------------------------
-
-
-def _gravity(g: Any) -> Any:
+def _gravity(g: Real) -> Real:
     """Size of the gravitational acceleration; the book writes g with either sign (up positive:
     g = -9.8)."""
     inputs.real(g, "g")
     if g == 0:
         raise ValueError("g must not be zero")
-    return abs(g)
+    return cast(Real, abs(g))  # abs of a Real: mypy joins a union's abs to object
 
 
-def toss_height(v_floor: Any, g: Any) -> Any:
+def toss_height(v_floor: Real, g: Real) -> Real:
     """Height a ball launched straight up at ``v_floor`` rises to, m (6.13a): g h = V^2 / 2.
 
     From the kinematics of constant deceleration: it rises for t = V / g, covering
@@ -480,11 +478,12 @@ def toss_height(v_floor: Any, g: Any) -> Any:
     """
     inputs.real(v_floor, "v_floor")
     gm = _gravity(g)
-    t = abs(v_floor) / gm
-    return abs(v_floor) * t - gm * t * t / 2
+    speed = cast(Real, abs(v_floor))
+    t = speed / gm
+    return speed * t - gm * t * t / 2
 
 
-def toss_height_gain(speed_gain: Any) -> Any:
+def toss_height_gain(speed_gain: Real) -> Real:
     """Factor by which the toss height grows when the launch speed grows ``speed_gain``-fold.
 
     "A 3-fold velocity gain means 3^2 = 9-fold height gain" (after (6.13)).
@@ -504,7 +503,7 @@ class Fall:
     speed_squared_per_g: float
 
 
-def fall_from_height(height: Any, g: Any) -> Fall:
+def fall_from_height(height: Real, g: Real) -> Fall:
     """Fall from rest through ``height`` under gravity ``g`` (either sign), no drag (6.13b)."""
     inputs.positive(height, "height")
     gm = float(_gravity(g))
@@ -513,21 +512,19 @@ def fall_from_height(height: Any, g: Any) -> Fall:
     return Fall(time=speed / gm, speed=speed, speed_squared_per_g=speed * speed / gm)
 
 
-def same_speed(speed: Any) -> Any:
+def same_speed(speed: Real) -> Real:
     """A speed the book restates in another unit ("24 meters per sec. or 55 mph", Fig. 7.3),
     SI: the value itself, which the evaluator converts to the printed unit."""
     inputs.real(speed, "speed")
     return speed
 
 
-def launch_speed(height: Any, g: Any) -> float:
+def launch_speed(height: Real, g: Real) -> float:
     """Launch speed that tosses a ball to ``height``, V = sqrt(2 g h) (6.13b), m/s."""
     return fall_from_height(height, g).speed
 
 
 # --- bang sequences: the trapped ball (Fig. 6.4), the monster pair (Fig. 6.5) ----------------
-
-
 @dataclass(frozen=True)
 class TrappedBall:
     """The little ball between a closing big ball and a fixed wall (Fig. 6.4).
@@ -538,13 +535,13 @@ class TrappedBall:
     ``times[k]`` the time of that wall bang.
     """
 
-    speeds: tuple[Any, ...]
-    ranges: tuple[Any, ...]
-    products: tuple[Any, ...]
-    times: tuple[Any, ...]
+    speeds: tuple[Real, ...]
+    ranges: tuple[Real, ...]
+    products: tuple[Real, ...]
+    times: tuple[Real, ...]
 
 
-def trapped_ball(v_wall: Any, v_ball: Any, gap: Any, bangs: Any) -> TrappedBall:
+def trapped_ball(v_wall: Real, v_ball: Real, gap: Real, bangs: int) -> TrappedBall:
     """Follow ``bangs`` bangs of the little ball trapped by a big ball closing at ``v_wall``.
 
     The wall is at x = 0, the little ball starts at x = -``gap`` with velocity ``v_ball``
@@ -580,7 +577,7 @@ def trapped_ball(v_wall: Any, v_ball: Any, gap: Any, bangs: Any) -> TrappedBall:
     return TrappedBall(tuple(speeds), tuple(ranges), tuple(products), tuple(times))
 
 
-def monster_pair(v_monster: Any, v_start: Any, bongs: Any) -> tuple[Any, ...]:
+def monster_pair(v_monster: Real, v_start: Real, bongs: int) -> tuple[Real, ...]:
     """Velocities of an atom pinged between two monster masses closing at +-V (Fig. 6.5).
 
     The left monster moves at +V, the right one at -V; an atom moving left (or at rest) is hit

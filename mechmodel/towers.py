@@ -18,14 +18,13 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.collisions import Collision, collide
 from mechmodel.contact import SoftCollision, soft_collision
 from mechmodel.ellipse import kinetic_energy, velocity_radius
+from mechmodel.typing import Real, Symbolic, Vector
 
 
 @dataclass(frozen=True)
@@ -37,25 +36,25 @@ class Tower:
     and after; ``velocities[k]`` is ball k+1's final velocity.
     """
 
-    masses: tuple[Any, ...]
-    rebound: Any
+    masses: tuple[Real, ...]
+    rebound: Real
     bangs: tuple[Collision, ...]
-    velocities: tuple[Any, ...]
+    velocities: tuple[Real, ...]
 
     @property
-    def momentum_slopes(self) -> tuple[Any, ...]:
+    def momentum_slopes(self) -> tuple[Real, ...]:
         """Sizes m_k / m_(k+1) of the slopes of the momentum lines of the bangs (Fig. 8.1(b):
         "a slope 100/30 line"): the line falls with slope -m_k / m_(k+1) in (V_k, V_(k+1))."""
         return tuple(lo / up for lo, up in itertools.pairwise(self.masses))
 
     @property
-    def energy_boost(self) -> Any:
+    def energy_boost(self) -> Real:
         """The top ball's kinetic-energy gain factor, (V_top / v_drop)^2 (after Fig. 8.2)."""
         ratio = self.velocities[-1] / self.rebound
         return ratio * ratio
 
 
-def independent_tower(masses: Sequence[Any], v_drop: Any = 1) -> Tower:
+def independent_tower(masses: Vector, v_drop: Real = 1) -> Tower:
     """Final velocities of an N-ball tower with independent collisions (Fig. 8.1(b), Fig. 8.2).
 
     Ball 1 rebounds elastically from the floor at +v_drop and meets ball 2, still falling at
@@ -78,7 +77,7 @@ def independent_tower(masses: Sequence[Any], v_drop: Any = 1) -> Tower:
     return Tower(tuple(masses), rebound, tuple(bangs), finals)
 
 
-def geometric_tower(n_balls: Any, ratio: Any, v_drop: Any = 1) -> Tower:
+def geometric_tower(n_balls: int, ratio: Real, v_drop: Real = 1) -> Tower:
     """The independent-collision tower of ``n_balls`` balls, each ``ratio`` times the one above
     it (Fig. 8.2: 4 balls with ratio 3 or 7; ratio 1 is Newton's balls). The top ball has mass 1.
     """
@@ -88,7 +87,7 @@ def geometric_tower(n_balls: Any, ratio: Any, v_drop: Any = 1) -> Tower:
     return independent_tower(masses, v_drop)
 
 
-def inf_limit_tower(n_balls: Any, v_drop: Any = 1) -> tuple[Any, ...]:
+def inf_limit_tower(n_balls: int, v_drop: Real = 1) -> tuple[Real, ...]:
     """Velocities of a tower whose every ball is infinitely heavier than the one above (the INF
     limit, Fig. 4.5, exercise 1.8.2): each ball leaves its bang at 2 V + v_drop, where V is the
     velocity of the (immovable) ball below. The top ball reaches (2^N - 1) v_drop."""
@@ -102,7 +101,7 @@ def inf_limit_tower(n_balls: Any, v_drop: Any = 1) -> tuple[Any, ...]:
     return tuple(out)
 
 
-def energy_boost(velocity: Any, v_drop: Any = 1) -> Any:
+def energy_boost(velocity: Real, v_drop: Real = 1) -> Real:
     """Kinetic-energy gain factor (V / v_drop)^2 of a ball launched at ``velocity`` by a tower
     dropped at ``v_drop``: the (V4)^2 of Fig. 8.2(b), the 5.8^2 of the 3:1 tower."""
     inputs.real(velocity, "velocity")
@@ -110,7 +109,7 @@ def energy_boost(velocity: Any, v_drop: Any = 1) -> Any:
     return (velocity / v_drop) * (velocity / v_drop)
 
 
-def column_bounce_bangs(n_balls: Any, ratio: Any = 1, v_drop: Any = 1) -> int:
+def column_bounce_bangs(n_balls: int, ratio: Real = 1, v_drop: Real = 1) -> int:
     """Number of independent bangs a dropped column of balls makes before it flies apart.
 
     The balls (each ``ratio`` times the one above; 1 for the identical balls of Fig. 8.2(c-d))
@@ -138,7 +137,7 @@ def column_bounce_bangs(n_balls: Any, ratio: Any = 1, v_drop: Any = 1) -> int:
 
 
 def zero_gap_tower(
-    masses: Sequence[Any], power: Any, v_drop: Any = 1, strength: Any = 1
+    masses: Vector, power: Real, v_drop: Real = 1, strength: Real = 1
 ) -> SoftCollision:
     """Final velocities of a tower dropped with zero gaps (Fig. 8.1(a), (c); Fig. 7.6-7.7).
 
@@ -169,16 +168,16 @@ class InelasticQuadratic:
     increasing order, None if the energy is below the minimum); ``v_com`` their mean.
     """
 
-    a: Any
-    b: Any
-    c: Any
-    momentum_coefficient: Any
-    energy_coefficient: Any
+    a: Real
+    b: Real
+    c: Real
+    momentum_coefficient: Real | None
+    energy_coefficient: Real
     roots: tuple[float, float] | None
-    v_com: Any
+    v_com: Real
 
 
-def inelastic_quadratic(m1: Any, m2: Any, momentum: Any, energy: Any) -> InelasticQuadratic:
+def inelastic_quadratic(m1: Real, m2: Real, momentum: Real, energy: Real) -> InelasticQuadratic:
     """Build (8.4b) by putting u2 = (p - m1 u1) / m2 (8.4a) into the energy (8.2), and solve it.
 
     The coefficients are read off the polynomial at u1 = 0, 1, -1, so nothing is assumed of
@@ -189,7 +188,7 @@ def inelastic_quadratic(m1: Any, m2: Any, momentum: Any, energy: Any) -> Inelast
     inputs.real(momentum, "momentum")
     inputs.real(energy, "energy")
 
-    def twice_balance(u1: Any, k: Any) -> Any:
+    def twice_balance(u1: Real, k: Real) -> Real:
         u2 = (momentum - m1 * u1) / m2
         return m1 * u1 * u1 + m2 * u2 * u2 - 2 * k
 
@@ -221,13 +220,13 @@ class InelasticBalance:
     given energy K, 2 (KE - K), the left side of (8.4b), which vanishes at the solutions.
     """
 
-    u2: Any
-    kinetic: Any
-    twice_residual: Any
+    u2: Real
+    kinetic: Real
+    twice_residual: Real
 
 
 def inelastic_energy_balance(
-    m1: Any, m2: Any, momentum: Any, energy: Any, u1: Any
+    m1: Real, m2: Real, momentum: Real, energy: Real, u1: Real
 ) -> InelasticBalance:
     """The kinetic energy of two balls of total momentum ``momentum`` when ball 1 moves at
     ``u1``, and twice its excess over ``energy`` ((8.2) with (8.4a) put in: the quadratic
@@ -242,7 +241,7 @@ def inelastic_energy_balance(
     return InelasticBalance(u2, kinetic, 2 * (kinetic - energy))
 
 
-def min_energy_retention(m1: Any, m2: Any) -> Any:
+def min_energy_retention(m1: Real, m2: Real) -> Real:
     """Lowest kinetic-energy retention KE_FIN / KE_IN of a collision from the start
     (V1, V2) = (V_IN, -V_IN) of Fig. 8.3-8.4 (the Bang(1) point): the totally inelastic
     (Ka-runch) final state at V_COM, where the energy ellipse shrinks to touch the momentum line
@@ -256,7 +255,7 @@ def min_energy_retention(m1: Any, m2: Any) -> Any:
     return after / before
 
 
-def min_retention_velocity_ratio(m1: Any, m2: Any) -> Any:
+def min_retention_velocity_ratio(m1: Symbolic, m2: Symbolic) -> Symbolic:
     """V_COM / V_IN for the start (V_IN, -V_IN): the common velocity of the totally inelastic
     collision over the initial speed ((8.6a)), from ``collide`` with restitution 0."""
     inputs.mass(m1, "m1")
@@ -264,7 +263,7 @@ def min_retention_velocity_ratio(m1: Any, m2: Any) -> Any:
     return collide(m1, m2, 1, -1, 0).v1
 
 
-def mass_ratio_for_retention(r_min: Any) -> float:
+def mass_ratio_for_retention(r_min: Real) -> float:
     """The mass ratio m2 / m1 <= 1 whose lowest energy retention (``min_energy_retention``)
     from the start (V_IN, -V_IN) is ``r_min`` ((8.6b) read backward), by bisection: the
     retention falls from 1 to 0 as m2 / m1 goes from 0 to 1."""
@@ -283,7 +282,7 @@ def mass_ratio_for_retention(r_min: Any) -> float:
     return (lo + hi) / 2
 
 
-def retention_from_radii(mass: Any, radius_in: Any, radius_fin: Any) -> Any:
+def retention_from_radii(mass: Real, radius_in: Real, radius_fin: Real) -> Real:
     """Kinetic-energy retention KE_FIN / KE_IN read off the radii of two energy ellipses along
     the velocity axis of ``mass`` (Fig. 8.3-8.4): an ellipse (3.7) reaches V = radius on that
     axis, where all the energy is that ball's, KE = mass radius^2 / 2."""
@@ -291,13 +290,13 @@ def retention_from_radii(mass: Any, radius_in: Any, radius_fin: Any) -> Any:
     inputs.positive(radius_in, "radius_in")
     inputs.positive(radius_fin, "radius_fin")
 
-    def energy(radius: Any) -> Any:
+    def energy(radius: Real) -> Real:
         return mass * radius * radius / 2
 
     return energy(radius_fin) / energy(radius_in)
 
 
-def equal_velocity_line_angle(v_com: Any) -> float:
+def equal_velocity_line_angle(v_com: Real) -> float:
     """Angle of the line through (V_COM, V_COM) and the origin (V1 = V2), radians: the 45-degree
     line on which the totally inelastic point of Fig. 8.3c-8.4 lies."""
     inputs.real(v_com, "v_com")
@@ -315,18 +314,18 @@ class PileUp:
     (1/1, 1/2, ...); energies are kinetic energies, ``energy_lost`` the total loss.
     """
 
-    momentum_in: Any
-    energy_in: Any
-    final_mass: Any
-    final_velocity: Any
-    momentum_out: Any
-    energy_out: Any
-    energy_lost: Any
-    slopes: tuple[Any, ...]
-    inverse_slopes: tuple[Any, ...]
+    momentum_in: Real
+    energy_in: Real
+    final_mass: Real
+    final_velocity: Real
+    momentum_out: Real
+    energy_out: Real
+    energy_lost: Real
+    slopes: tuple[Real, ...]
+    inverse_slopes: tuple[Real, ...]
 
 
-def pile_up(car_mass: Any, car_speed: Any, moving_cars: Any, stationary_cars: Any) -> PileUp:
+def pile_up(car_mass: Real, car_speed: Real, moving_cars: int, stationary_cars: int) -> PileUp:
     """Pile up ``moving_cars`` cars at ``car_speed`` and ``stationary_cars`` cars at rest, all of
     ``car_mass``, by Ka-runch collisions (``collide`` with restitution 0).
 
@@ -342,6 +341,7 @@ def pile_up(car_mass: Any, car_speed: Any, moving_cars: Any, stationary_cars: An
         raise ValueError("a mixed pile-up has many possible orders (Fig. 8.7): give one side 1")
     momentum_in = moving * car_mass * car_speed
     energy_in = moving * car_mass * car_speed * car_speed / 2
+    added_v: Real
     if moving == 1:
         pile_mass, pile_v, added, added_v = car_mass, car_speed, still, 0 * car_speed
     else:
@@ -386,18 +386,18 @@ class PelletRocket:
     payload_label: int
     last_blast: int
     blasts: int
-    rocket_masses: tuple[Any, ...]
-    boosts: tuple[Any, ...]
-    velocities: tuple[Any, ...]
-    slopes: tuple[Any, ...]
-    pellet_momentum: Any
-    pellet_velocities: tuple[Any, ...]
-    total_momenta: tuple[Any, ...]
+    rocket_masses: tuple[Real, ...]
+    boosts: tuple[Real, ...]
+    velocities: tuple[Real, ...]
+    slopes: tuple[Real, ...]
+    pellet_momentum: Real
+    pellet_velocities: tuple[Real, ...]
+    total_momenta: tuple[Real, ...]
     first_fast_blast: int | None
     first_forward_pellet: int | None
 
 
-def pellet_rocket(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any) -> PelletRocket:
+def pellet_rocket(n_balls: int, pellet_mass: Real, exhaust_velocity: Real) -> PelletRocket:
     """Blow the pellets off a line of ``n_balls`` equal balls at rest, one per blast (8.7).
 
     Each blast conserves momentum: m dv_b + M_b dV_M(b) = 0 with dv_b = ``exhaust_velocity``
@@ -439,7 +439,7 @@ def pellet_rocket(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any) -> Pell
     )
 
 
-def retained_ellipse_radius(mass: Any, radius_in: Any, retention: Any) -> Any:
+def retained_ellipse_radius(mass: Real, radius_in: Real, retention: Real) -> Real:
     """Radius, along the velocity axis of ``mass``, of the energy ellipse that keeps the share
     ``retention`` = KE_FIN / KE_IN of the energy of the ellipse of radius ``radius_in`` (Fig.
     8.3b): the ellipse (3.7) reaches V = radius on that axis, where KE = mass radius^2 / 2."""
@@ -458,13 +458,15 @@ class RocketBlast:
     (8.7b)), its velocity boost dV_M(b), its velocity V(b) after it and ``terms``, how many of
     the boosts (terms of the harmonic series for unit pellets) add up to V(b)."""
 
-    rocket_mass: Any
-    boost: Any
-    velocity: Any
+    rocket_mass: Real
+    boost: Real
+    velocity: Real
     terms: int
 
 
-def rocket_blast(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any, blast: Any) -> RocketBlast:
+def rocket_blast(
+    n_balls: int, pellet_mass: Real, exhaust_velocity: Real, blast: int
+) -> RocketBlast:
     """Blast number ``blast`` (0 ... N-2) of the pellet rocket of ``pellet_rocket``."""
     b = inputs.count(blast, "blast")
     rocket = pellet_rocket(n_balls, pellet_mass, exhaust_velocity)
@@ -475,7 +477,7 @@ def rocket_blast(n_balls: Any, pellet_mass: Any, exhaust_velocity: Any, blast: A
     return RocketBlast(rocket.rocket_masses[b], rocket.boosts[b], rocket.velocities[b], terms)
 
 
-def blasts_leaving(n_balls: Any, remaining: Any) -> int:
+def blasts_leaving(n_balls: int, remaining: int) -> int:
     """Number of blasts after which ``remaining`` of the ``n_balls`` balls are left in the
     rocket (Fig. 8.8): the blasts of ``pellet_rocket`` counted until its mass is ``remaining``
     pellets."""
@@ -487,7 +489,7 @@ def blasts_leaving(n_balls: Any, remaining: Any) -> int:
     return next(b + 1 for b, mass in enumerate(rocket.rocket_masses) if mass == k)
 
 
-def rocket_remaining(n_balls: Any, remaining: Any) -> tuple[int, ...]:
+def rocket_remaining(n_balls: int, remaining: int) -> tuple[int, ...]:
     """Labels of the balls still in the rocket when ``remaining`` of the ``n_balls`` are left
     (Fig. 8.8): the pellets go from the rear, ball 0 first, so the last ``remaining`` labels
     stay, the payload N - 1 at the head."""

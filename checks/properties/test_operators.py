@@ -7,6 +7,7 @@ within 1e-12 of the magnitudes involved.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from fractions import Fraction
 
 import pytest
@@ -84,7 +85,7 @@ REL = 1e-12
 UNIT = ((1, 0), (0, 1))
 
 
-def worst(a, b) -> float:
+def worst(a: Sequence[Sequence[float]], b: Sequence[Sequence[float]]) -> float:
     return max(abs(x - y) for ra, rb in zip(a, b, strict=True) for x, y in zip(ra, rb, strict=True))
 
 
