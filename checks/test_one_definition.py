@@ -11,22 +11,26 @@ from pathlib import Path
 ROOT = Path(__file__).parents[1]
 
 
-def public_definitions(paths: list[Path]) -> dict[str, list[str]]:
-    """Each public top-level def or class name and the modules that define it."""
+def public_definitions(root: Path) -> dict[str, list[str]]:
+    """Each public top-level def or class name under ``root`` (subpackages included) and the
+    modules that define it, as dotted paths relative to ``root``."""
     where: dict[str, list[str]] = defaultdict(list)
-    for path in sorted(paths):
+    for path in sorted(root.rglob("*.py")):
+        module = ".".join(path.relative_to(root).with_suffix("").parts)
         for node in ast.parse(path.read_text(encoding="utf-8")).body:
             if isinstance(node, ast.FunctionDef | ast.ClassDef) and not node.name.startswith("_"):
-                where[node.name].append(path.stem)
+                where[node.name].append(module)
     return where
 
 
 def test_no_public_name_is_defined_in_two_mechmodel_modules() -> None:
-    where = public_definitions(list((ROOT / "mechmodel").glob("*.py")))
+    where = public_definitions(ROOT / "mechmodel")
     assert {name: mods for name, mods in where.items() if len(mods) > 1} == {}
 
 
-def test_the_check_sees_a_second_definition(tmp_path: Path) -> None:
+def test_the_check_sees_a_second_definition_in_a_subpackage(tmp_path: Path) -> None:
     (tmp_path / "one.py").write_text("def dot(u, v):\n    return 0\n", encoding="utf-8")
-    (tmp_path / "two.py").write_text("from one import dot\n\n\ndef dot(u, v):\n    return 1\n")
-    assert public_definitions(list(tmp_path.glob("*.py")))["dot"] == ["one", "two"]
+    (tmp_path / "topic").mkdir()
+    (tmp_path / "topic" / "__init__.py").write_text("from one import dot\n", encoding="utf-8")
+    (tmp_path / "topic" / "two.py").write_text("def dot(u, v):\n    return 1\n")
+    assert public_definitions(tmp_path)["dot"] == ["one", "topic.two"]
