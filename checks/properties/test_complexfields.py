@@ -33,6 +33,7 @@ from checks.properties.strategies import (
 )
 from mechmodel import complexfields as cf
 from mechmodel.algebra import I_UNIT, Gaussian, Laurent
+from mechmodel.complexfields import cauchy
 
 pytestmark = pytest.mark.properties
 HALF = Fraction(1, 2)
@@ -426,7 +427,7 @@ def test_cauchys_derivative_formula_holds_for_every_order(order: int) -> None:
     assert_close(d.two_pi.value, 2 * math.pi, rel=0, abs=d.two_pi.error + 1e-14)
     # the integral is 2 pi/|b - a|^(n+1) while the integrand reaches r^-n/(|b - a| + r) on the
     # circle |z - a| = r: at DIGITS digits, that cancellation bounds the relative precision
-    distance, r = abs(cf._CAUCHY_POLE - cf._CAUCHY_CENTER), cf._CAUCHY_RADIUS
+    distance, r = abs(cauchy._CAUCHY_POLE - cauchy._CAUCHY_CENTER), cauchy._CAUCHY_RADIUS
     floor = 10.0**-cf.DIGITS * (distance / r) ** order * distance / (distance + r)
     for part, size in ((d.two_pi, 2 * math.pi), (d.numerator, math.factorial(order))):
         assert part.error >= floor * size
