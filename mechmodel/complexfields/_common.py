@@ -9,20 +9,20 @@ from __future__ import annotations
 
 import cmath
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import Gaussian
+from mechmodel.typing import Real
 
 
 def _real(value: Fraction | Gaussian, what: str) -> Fraction:
     g = Gaussian.of(value)
     if g.im != 0:
         raise ArithmeticError(f"{what} should be real, got {g}")
-    return g.re
+    return Fraction(g.re)
 
 
-def _point(x: Any, y: Any) -> complex:
+def _point(x: Real, y: Real) -> complex:
     inputs.real(x, "x")
     inputs.real(y, "y")
     z = complex(float(x), float(y))
@@ -31,19 +31,19 @@ def _point(x: Any, y: Any) -> complex:
     return z
 
 
-def _polar_point(r: Any, theta: Any) -> complex:
+def _polar_point(r: Real, theta: Real) -> complex:
     inputs.positive(r, "r")
     inputs.real(theta, "theta")
     return cmath.rect(float(r), float(theta))
 
 
-def _strength(strength_re: Any, strength_im: Any) -> complex:
+def _strength(strength_re: Real, strength_im: Real) -> complex:
     inputs.real(strength_re, "strength_re")
     inputs.real(strength_im, "strength_im")
     return complex(float(strength_re), float(strength_im))
 
 
-def _integer(value: Any, name: str) -> int:
+def _integer(value: Real, name: str) -> int:
     n = int(value)
     if n != value:
         raise ValueError(f"{name} must be an integer, got {value!r}")

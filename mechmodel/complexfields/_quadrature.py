@@ -11,33 +11,31 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from functools import cache
-from typing import Any
+from typing import TypeAlias
 
 import mpmath
 import numpy as np
+import numpy.typing as npt
 
 DIGITS = 30
-
-
 POINTS = 64  # nodes for the Cauchy formulas (a pole 2.75 away from a contour of radius 0.5)
-
-
 MONOMIAL_POINTS = 16  # exact for z^p with |p + 1| < 8 (the coarse rule has 8 nodes)
+LAURENT_POINTS = 32  # exact for the degree range of the test Laurent series of ``cauchy``
 
-
-LAURENT_POINTS = 32  # exact for the degree range of the test Laurent series below
+# the points of a circle (and a function's values there) as numpy complex arrays
+ComplexArray: TypeAlias = npt.NDArray[np.complex128]
 
 
 @cache
-def _unit_nodes(points: int) -> tuple[Any, ...]:
+def _unit_nodes(points: int) -> tuple[mpmath.mpc, ...]:
     """The ``points`` roots of unity exp(2 pi i k / points), at the working precision."""
     with mpmath.workdps(DIGITS):
         return tuple(mpmath.expj(2 * mpmath.pi * k / points) for k in range(points))
 
 
 def _contour(
-    func: Callable[[Any], Any], center: complex, radius: float, points: int
-) -> tuple[Any, Any]:
+    func: Callable[[mpmath.mpc], mpmath.mpc], center: complex, radius: float, points: int
+) -> tuple[mpmath.mpc, mpmath.mpf]:
     """Trapezoid rule for the integral of func(z) dz around the circle |z - center| = radius,
     with ``points`` nodes and (for the error estimate) with every other one: (value, error
     estimate). Spectrally accurate for
@@ -54,7 +52,7 @@ def _contour(
 
 
 def _float_contour(
-    func: Callable[[Any], Any], center: complex, radius: float, points: int
+    func: Callable[[ComplexArray], ComplexArray], center: complex, radius: float, points: int
 ) -> tuple[complex, float]:
     """The same trapezoid rule in double precision (numpy), for decisions that only need to
     tell zero from non-zero or one power from another: (value, error estimate)."""

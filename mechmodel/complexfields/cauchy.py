@@ -10,9 +10,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import cache
-from typing import Any
 
 import mpmath
+import numpy as np
 
 from mechmodel import inputs
 from mechmodel.complexfields._common import _integer, _point
@@ -20,10 +20,11 @@ from mechmodel.complexfields._quadrature import (
     DIGITS,
     LAURENT_POINTS,
     POINTS,
+    ComplexArray,
     _contour,
     _float_contour,
 )
-from mechmodel.typing import Estimate
+from mechmodel.typing import Estimate, Real
 
 
 def _test_laurent_coefficients(lowest: int, highest: int) -> dict[int, complex]:
@@ -43,7 +44,7 @@ class LaurentCoefficientCheck:
     residual: Estimate
 
 
-def laurent_coefficient_check(index: Any) -> LaurentCoefficientCheck:
+def laurent_coefficient_check(index: int) -> LaurentCoefficientCheck:
     """Recover a known Laurent coefficient a_index by contour integration (10.44)."""
     n = int(index)
     coeffs = _test_laurent_coefficients(-5, 5)
@@ -54,7 +55,7 @@ def laurent_coefficient_check(index: Any) -> LaurentCoefficientCheck:
     ordered = [coeffs[k] for k in sorted(coeffs, reverse=True)]
     weight = -n - 1
 
-    def weighted(z: Any) -> Any:
+    def weighted(z: mpmath.mpc) -> mpmath.mpc:
         total = mpmath.mpc(0)
         for c in ordered:  # Horner: sum c_k z^(k - lowest)
             total = total * z + c
@@ -72,19 +73,15 @@ def laurent_coefficient_check(index: Any) -> LaurentCoefficientCheck:
 # Cauchy's formulas (10.45) with the test function g(z) = 1/(b - z), analytic inside the
 # contour, whose derivatives are known in closed form: g^(n)(a) = n! / (b - a)^(n+1).
 _CAUCHY_POLE = 3
-
-
 _CAUCHY_CENTER = complex(1 / 4, 1 / 8)
-
-
 _CAUCHY_RADIUS = 1 / 2  # well inside |b - a|: the rule with 32 points is already at 1e-23
 
 
-def _cauchy_data(order: int, kernel_power: int) -> tuple[Any, Any, Any]:
+def _cauchy_data(order: int, kernel_power: int) -> tuple[mpmath.mpc, mpmath.mpf, mpmath.mpc]:
     """(integral of g/(z-a)^kernel_power dz, its error, g^(order)(a)), at 30 digits."""
     a = _CAUCHY_CENTER
 
-    def integrand(z: Any) -> Any:
+    def integrand(z: mpmath.mpc) -> mpmath.mpc:
         return 1 / ((_CAUCHY_POLE - z) * (z - a) ** kernel_power)
 
     value, error = _contour(integrand, a, _CAUCHY_RADIUS, POINTS)
@@ -106,7 +103,7 @@ class CauchyDerivative:
     taylor_numerator: Estimate
 
 
-def cauchy_derivative(order: Any) -> CauchyDerivative:
+def cauchy_derivative(order: int) -> CauchyDerivative:
     """The n-th Cauchy formula by numerical contour integration (10.45a-c)."""
     n = inputs.count(order, "order")
     value, error, exact = _cauchy_data(n, n + 1)
@@ -134,16 +131,18 @@ class CauchyKernel:
     shift: int
 
 
-def cauchy_kernel(order: Any) -> CauchyKernel:
+def cauchy_kernel(order: int) -> CauchyKernel:
     """Search the kernel power p for which (n!/(2 pi i)) loop g/(z-a)^p dz = g^(n)(a)."""
     n = inputs.count(order, "order")
     a = _CAUCHY_CENTER
     exact = math.factorial(n) / (_CAUCHY_POLE - a) ** (n + 1)
     matches = []
     for p in range(1, n + 4):
-        value, error = _float_contour(
-            lambda z, p=p: 1 / ((_CAUCHY_POLE - z) * (z - a) ** p), a, _CAUCHY_RADIUS, POINTS
-        )
+
+        def kernel(z: ComplexArray, p: int = p) -> ComplexArray:
+            return 1 / ((_CAUCHY_POLE - z) * (z - a) ** p)
+
+        value, error = _float_contour(kernel, a, _CAUCHY_RADIUS, POINTS)
         guess = math.factorial(n) * value / (2j * math.pi)
         if abs(guess - exact) <= 10**3 * error + 10.0**-12 * abs(exact):
             matches.append(p)
@@ -153,7 +152,7 @@ def cauchy_kernel(order: Any) -> CauchyKernel:
 
 
 @cache
-def laurent_weight_power(index: Any) -> int:
+def laurent_weight_power(index: int) -> int:
     """The power p for which (1/(2 pi i)) loop z^p f(z) dz around the origin returns the
     Laurent coefficient a_index of f (10.44): searched over p = -8 ... 8 by contour integration
     (double precision) of a test series with known, distinct coefficients; the one p that
@@ -165,8 +164,8 @@ def laurent_weight_power(index: Any) -> int:
     found = []
     for p in range(-8, 9):
 
-        def weighted(z: Any, p: int = p) -> Any:
-            return sum(c * z ** (k + p) for k, c in coeffs.items())
+        def weighted(z: ComplexArray, p: int = p) -> ComplexArray:
+            return sum((c * z ** (k + p) for k, c in coeffs.items()), start=np.zeros_like(z))
 
         value, error = _float_contour(weighted, 0j, 1.0, LAURENT_POINTS)
         if abs(value / (2j * math.pi) - coeffs[n]) <= 10**3 * error + 10.0**-12:
@@ -176,7 +175,7 @@ def laurent_weight_power(index: Any) -> int:
     return found[0]
 
 
-def laurent_weight_at(index: Any, x: Any, y: Any) -> complex:
+def laurent_weight_at(index: int, x: Real, y: Real) -> complex:
     """The weight z^p of f(z) in the loop integral that gives a_index (``laurent_weight_power``),
     at z = x + i y."""
     p = laurent_weight_power(index)

@@ -15,24 +15,16 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 from functools import cache
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import I_UNIT, Gaussian, Laurent
 from mechmodel.complexfields._common import _real
+from mechmodel.typing import Real
 
 ZSTAR = "s"  # the variable z* of a polynomial in z, z* (printed "s" in its view: "z1s2")
-
-
 X = Laurent.var("x")
-
-
 Y = Laurent.var("y")
-
-
 Z_OF_XY = X + Y * I_UNIT  # z = x + i y
-
-
 ZSTAR_OF_XY = X - Y * I_UNIT  # z* = x - i y
 
 
@@ -77,9 +69,9 @@ def poly_view(p: Laurent, first: str = "x", second: str = "y") -> PolyView:
     """The printed form of a polynomial in the variables ``first``, ``second`` with real
     coefficients (``ValueError`` if not real)."""
     terms = p.powers(first, second)
-    if any(isinstance(c, Gaussian) for c in terms.values()):
+    coeffs = {k: c for k, c in sorted(terms.items()) if isinstance(c, Fraction)}
+    if len(coeffs) != len(terms):
         raise ValueError("poly_view needs real coefficients: take real_part or imag_part first")
-    coeffs = dict(sorted(terms.items()))
     denominator = math.lcm(*(c.denominator for c in coeffs.values())) if coeffs else 1
     by_first: dict[int, list[int]] = {}
     by_second: dict[int, list[int]] = {}
@@ -197,10 +189,10 @@ class LaminarField:
 
 def _size(p: Laurent) -> Fraction:
     parts = (Gaussian.of(c) for c in p.terms.values())
-    return max((max(abs(g.re), abs(g.im)) for g in parts), default=Fraction(0))
+    return max((max(abs(Fraction(g.re)), abs(Fraction(g.im))) for g in parts), default=Fraction(0))
 
 
-def conjugate_linear_field(strength_re: Any = 1, strength_im: Any = 0) -> LaminarField:
+def conjugate_linear_field(strength_re: Real = 1, strength_im: Real = 0) -> LaminarField:
     """f(z) = a z, a = strength_re + i strength_im (exact), and its divergence-free laminar
     plot field F = (Re f*, Im f*) (10.32), Fig. 10.7."""
     a = Gaussian(Fraction(strength_re), Fraction(strength_im))
@@ -216,7 +208,7 @@ def conjugate_linear_field(strength_re: Any = 1, strength_im: Any = 0) -> Lamina
     )
 
 
-def phasor_pair_square(r1: Any, phi1: Any, r2: Any, phi2: Any, sign: Any = 1) -> float:
+def phasor_pair_square(r1: Real, phi1: Real, r2: Real, phi2: Real, sign: int = 1) -> float:
     """|z + s z'|^2 for the phasors z = r1 e^(i phi1), z' = r2 e^(i phi2) and s = +1 (sum) or
     -1 (difference): the squared length of the parallelogram diagonal, computed as the product
     (z + s z')* (z + s z') of the sum with its conjugate (10.25a-b), Fig. 10.6."""
@@ -237,7 +229,7 @@ class PlanePoint:
     y: float
 
 
-def coordinates_from_z(x: Any, y: Any) -> PlanePoint:
+def coordinates_from_z(x: Real, y: Real) -> PlanePoint:
     """x and y rebuilt from z = x + i y and z* = x - i y with the entries of the inverse map
     (``inverse_coordinates``): x = (dx/dz) z + (dx/dz*) z*, y = (dy/dz) z + (dy/dz*) z* (10.31)."""
     inputs.real(x, "x")
@@ -257,7 +249,7 @@ class ChainRule:
     dzstar: complex
 
 
-def chain_rule_derivatives(dfdx_re: Any, dfdx_im: Any, dfdy_re: Any, dfdy_im: Any) -> ChainRule:
+def chain_rule_derivatives(dfdx_re: Real, dfdx_im: Real, dfdy_re: Real, dfdy_im: Real) -> ChainRule:
     """The z- and z*-derivatives of a function f(x, y) whose partial derivatives at the point
     are df/dx = dfdx_re + i dfdx_im and df/dy = dfdy_re + i dfdy_im, by the chain rule
     df/dz = (dx/dz) df/dx + (dy/dz) df/dy (and the same for z*) with the factors of the inverse
@@ -278,7 +270,9 @@ def chain_rule_derivatives(dfdx_re: Any, dfdx_im: Any, dfdy_re: Any, dfdy_im: An
     )
 
 
-def conjugate_potential_derivative(dphi_dx: Any, dphi_dy: Any, da_dx: Any, da_dy: Any) -> complex:
+def conjugate_potential_derivative(
+    dphi_dx: Real, dphi_dy: Real, da_dx: Real, da_dy: Real
+) -> complex:
     """dphi*/dz* of the conjugate potential phi* = Phi - i A whose parts have the partial
     derivatives dPhi/dx, dPhi/dy, dA/dx, dA/dy at the point: the chain rule
     (``chain_rule_derivatives``) applied to d(Phi - iA)/dx and d(Phi - iA)/dy, (10.34)."""

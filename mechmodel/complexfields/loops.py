@@ -7,14 +7,20 @@ loop integral. Results are ``Estimate`` values (value and numerical error). Dime
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
 
+import mpmath
 import numpy as np
 
 from mechmodel import inputs
-from mechmodel.complexfields._quadrature import MONOMIAL_POINTS, _contour, _float_contour
-from mechmodel.typing import Estimate
+from mechmodel.complexfields._quadrature import (
+    MONOMIAL_POINTS,
+    ComplexArray,
+    _contour,
+    _float_contour,
+)
+from mechmodel.typing import Estimate, Real
 
 
 @dataclass(frozen=True)
@@ -26,18 +32,18 @@ class LoopIntegral:
     imag: Estimate
 
 
-def _numeric_parts(value: Any, error: Any) -> LoopIntegral:
+def _numeric_parts(value: mpmath.mpc, error: mpmath.mpf) -> LoopIntegral:
     err = float(error)
     return LoopIntegral(Estimate(float(value.real), err), Estimate(float(value.imag), err))
 
 
 def power_loop_integral(
-    power: Any,
-    strength_re: Any = 1,
-    strength_im: Any = 0,
-    center_re: Any = 0,
-    center_im: Any = 0,
-    radius: Any = 1,
+    power: int,
+    strength_re: Real = 1,
+    strength_im: Real = 0,
+    center_re: Real = 0,
+    center_im: Real = 0,
+    radius: Real = 1,
 ) -> LoopIntegral:
     """Loop integral of a (z - c)^p dz around a circle about c (10.39): 2 pi i a for p = -1,
     zero for every other integer power."""
@@ -54,7 +60,11 @@ def power_loop_integral(
 
 
 def laurent_loop_integral(
-    terms: list[list[Any]], center_re: Any, center_im: Any, radius: Any, points: int = 2**7
+    terms: Sequence[Sequence[Real]],
+    center_re: Real,
+    center_im: Real,
+    radius: Real,
+    points: int = 2**7,
 ) -> LoopIntegral:
     """Loop integral of f(z) = sum c_k z^k, terms [[re, im, k], ...], around the circle
     |z - c| = radius (10.39), (10.44): 2 pi i c_-1 when the circle encloses the origin, zero
@@ -68,7 +78,7 @@ def laurent_loop_integral(
         raise ValueError("the circle passes too close to the pole at the origin")
     coeffs = [(complex(float(re), float(im)), int(k)) for re, im, k in terms]
 
-    def f(z: Any) -> Any:
+    def f(z: ComplexArray) -> ComplexArray:
         return sum((a * z**k for a, k in coeffs), start=np.zeros_like(z))
 
     value, error = _float_contour(f, c, r, points)
@@ -88,7 +98,7 @@ class LineSource:
     circulation: Estimate
 
 
-def line_source(strength_re: Any = 1, strength_im: Any = 0) -> LineSource:
+def line_source(strength_re: Real = 1, strength_im: Real = 0) -> LineSource:
     """Field, plot numerator and loop integrals of the line source a = strength_re + i
     strength_im (a = q real: line charge; a = i J: line current, a vortex)."""
     inputs.real(strength_re, "strength_re")
@@ -108,14 +118,18 @@ class LoopPowers:
     m: int  # multipole index of that term, m = n + 1 (the 2^|m|-pole labelling of (10.44))
 
 
-def nonzero_loop_powers(lowest: Any = -6, highest: Any = 6) -> LoopPowers:
+def nonzero_loop_powers(lowest: int = -6, highest: int = 6) -> LoopPowers:
     """Scan n in [lowest, highest] by numerical contour integration (double precision: only
     zero and non-zero need telling apart)."""
     found = []
     for n in range(int(lowest), int(highest) + 1):
         if not -MONOMIAL_POINTS // 2 < n + 1 < MONOMIAL_POINTS // 2:
             raise ValueError("the scan range must keep |n + 1| below 8")
-        value, error = _float_contour(lambda z, n=n: z**n, 0j, 1.0, MONOMIAL_POINTS)
+
+        def power(z: ComplexArray, n: int = n) -> ComplexArray:
+            return z**n
+
+        value, error = _float_contour(power, 0j, 1.0, MONOMIAL_POINTS)
         if abs(value) > 10**3 * error:
             found.append(n)
     if len(found) != 1:

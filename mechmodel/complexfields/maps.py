@@ -10,9 +10,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
+from mechmodel.typing import Real
 
 
 @dataclass(frozen=True)
@@ -30,7 +30,7 @@ class StereographicPoint:
 
     z_radius: float
     w_radius: float
-    radius: Any
+    radius: Real  # exact for an exact diameter
     tan_angle_divisor: float
     cot_angle_divisor: float
     w_exponent: float
@@ -43,7 +43,7 @@ class StereographicPoint:
     south_height_angle_divisor: float
 
 
-def stereographic_projection(theta: Any, diameter: Any) -> StereographicPoint:
+def stereographic_projection(theta: Real, diameter: Real) -> StereographicPoint:
     """Coordinates of the construction of Fig. 10.15 for a point at angle theta (radians)."""
     inputs.positive(diameter, "diameter")
     inputs.real(theta, "theta")
@@ -75,7 +75,7 @@ def stereographic_projection(theta: Any, diameter: Any) -> StereographicPoint:
     )
 
 
-def stereographic_image_radius(z_radius: Any, diameter: Any) -> float:
+def stereographic_image_radius(z_radius: Real, diameter: Real) -> float:
     """|w| of the image of a z-point at distance |z| from N: project it onto the sphere along
     the line to S, then from N onto the w-plane (Fig. 10.15); equals D^2/|z|."""
     inputs.positive(z_radius, "z_radius")
@@ -105,7 +105,7 @@ class StereographicLengths:
     south_angle: float
 
 
-def stereographic_lengths(theta: Any, diameter: Any) -> StereographicLengths:
+def stereographic_lengths(theta: Real, diameter: Real) -> StereographicLengths:
     """The construction of Fig. 10.15 in coordinates: S at the origin, N at height D, P on the
     circle of radius D/2 about the centre at angle theta from N; the line S -> P continued to
     height D gives |z|, the line N -> P continued to height 0 gives |w|."""
@@ -127,7 +127,7 @@ def stereographic_lengths(theta: Any, diameter: Any) -> StereographicLengths:
     )
 
 
-def stereographic_preimage_radius(w_radius: Any, diameter: Any) -> float:
+def stereographic_preimage_radius(w_radius: Real, diameter: Real) -> float:
     """|z| of the point whose image is at distance |w| from S: project the w-point onto the
     sphere along the line to N, then from S onto the z-plane (Fig. 10.15)."""
     inputs.positive(w_radius, "w_radius")

@@ -12,7 +12,8 @@ import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+
+import mpmath
 
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
@@ -25,7 +26,7 @@ from mechmodel.complexfields.potentials import (
     power_antiderivative,
     power_field_at,
 )
-from mechmodel.typing import Estimate
+from mechmodel.typing import Estimate, Real
 
 
 @dataclass(frozen=True)
@@ -40,7 +41,7 @@ class DipolePair:
     point_dipole_coefficient: Fraction
 
 
-def dipole_pair(position_divisor: Any) -> DipolePair:
+def dipole_pair(position_divisor: Real) -> DipolePair:
     """Combine the two line-source fields exactly, as polynomials in z and the separation D."""
     d = Fraction(position_divisor)
     inputs.positive(d, "position_divisor")
@@ -92,7 +93,7 @@ def quadrupole_relations() -> QuadrupoleRelations:
     )
 
 
-def level_line_angle(field_power: Any, x: Any = 7 / 10, y: Any = 4 / 10) -> Estimate:
+def level_line_angle(field_power: int, x: Real = 7 / 10, y: Real = 4 / 10) -> Estimate:
     """Angle (radians) between the level lines of Phi and of A of the potential of z^n at
     (x, y), from central differences of phi; 90 degrees for every analytic potential
     (Cauchy-Riemann), Fig. 10.13. Error: the O(h^2) difference error."""
@@ -127,7 +128,7 @@ class MultipoleTerm:
     location: str
 
 
-def multipole_of_laurent_term(field_power: Any) -> MultipoleTerm:
+def multipole_of_laurent_term(field_power: int) -> MultipoleTerm:
     """A term z^n with n < 0 is the field of ln z differentiated -(n+1) times (a 2^-(n+1)-pole
     at z = 0); with n >= 0, w = 1/z turns z^n dz into -w^(-n-2) dw, a pole term at w = 0
     (z = infinity) of order n + 1. Each z-derivative doubles the sources."""
@@ -142,7 +143,7 @@ def multipole_of_laurent_term(field_power: Any) -> MultipoleTerm:
     return MultipoleTerm(n, order, multipole_pole_count(order), location)
 
 
-def laurent_term_of_multipole(order: Any, location: str) -> int:
+def laurent_term_of_multipole(order: int, location: str) -> int:
     """The field power n of the Laurent term of a 2^order-pole at ``location`` ("origin" or
     "infinity"), by searching the terms of (10.44)."""
     k = inputs.count(order, "order")
@@ -158,7 +159,9 @@ def laurent_term_of_multipole(order: Any, location: str) -> int:
     return found[0]
 
 
-def multipole_sources(order: Any, spacing: Any = 1 / 64) -> list[tuple[int, Any]]:
+def multipole_sources(
+    order: int, spacing: Real | mpmath.mpf = 1 / 64
+) -> list[tuple[int, complex | mpmath.mpc]]:
     """Point sources (strength, position) of a 2^order-pole built as the book does: a unit
     1-pole, then repeatedly a (-)copy displaced a little (10.41), (10.43). Each step moves in
     a new direction (golden-angle turns) so that no two sources coincide. Floats, or mpmath
@@ -172,7 +175,7 @@ def multipole_sources(order: Any, spacing: Any = 1 / 64) -> list[tuple[int, Any]
     return sources
 
 
-def multipole_pole_count(order: Any) -> int:
+def multipole_pole_count(order: int) -> int:
     """Number of distinct point sources of the 2^order-pole construction."""
     return len({(round(p.real, 12), round(p.imag, 12)) for _, p in multipole_sources(order)})
 
@@ -182,7 +185,7 @@ def multipole_field(z: complex, sources: Iterable[tuple[int, complex]]) -> compl
     return sum((q / (z - p) for q, p in sources), start=0j)
 
 
-def potential_term_poles(potential_power: Any) -> int:
+def potential_term_poles(potential_power: int) -> int:
     """The number of poles 2^order of the multipole behind the potential term a z^m/m, m != 0
     (10.44): its field term is a z^(m-1) (``multipole_of_laurent_term``)."""
     m = _integer(potential_power, "potential_power")
@@ -192,7 +195,7 @@ def potential_term_poles(potential_power: Any) -> int:
 
 
 def multipole_term_at(
-    order: Any, location: str, x: Any, y: Any, strength_re: Any = 1, strength_im: Any = 0
+    order: int, location: str, x: Real, y: Real, strength_re: Real = 1, strength_im: Real = 0
 ) -> FieldPoint:
     """The Laurent term a z^n of a 2^order-pole at the origin or at infinity (10.44), the
     power n found by ``laurent_term_of_multipole``, with its potential (``power_field_at``)."""
@@ -201,7 +204,7 @@ def multipole_term_at(
 
 
 def dipole_pair_at(
-    strength: Any, separation: Any, x: Any, y: Any, position_divisor: Any = 2
+    strength: Real, separation: Real, x: Real, y: Real, position_divisor: Real = 2
 ) -> FieldPoint:
     """The pair of line sources of (10.41): +a at z = -D/d and -a at z = +D/d (the pair whose
     field the book prints, f_dipole = a/(z + D/2) - a/(z - D/2)), at z = x + i y: the field is
@@ -221,7 +224,7 @@ def dipole_pair_at(
 
 
 def line_multipole_at(
-    strength: Any, derivatives: Any, x: Any, y: Any, factor: Any = 1
+    strength: Real, derivatives: int, x: Real, y: Real, factor: Real = 1
 ) -> FieldPoint:
     """The k-th z-derivative of the unit line source, k = ``derivatives`` (10.40)-(10.43): the
     field factor * d^k/dz^k (a/z) and the potential factor * d^k/dz^k (a ln z), whose
@@ -247,14 +250,14 @@ def line_multipole_at(
 
 
 def line_multipole_polar(
-    strength: Any, derivatives: Any, r: Any, theta: Any, factor: Any = 1
+    strength: Real, derivatives: int, r: Real, theta: Real, factor: Real = 1
 ) -> FieldPoint:
     """``line_multipole_at`` at z = r e^(i theta) (the polar labels of Fig. 10.11, (10.42))."""
     z = _polar_point(r, theta)
     return line_multipole_at(strength, derivatives, z.real, z.imag, factor)
 
 
-def dipole_level_radius(strength: Any, level: Any, theta: Any, part: str) -> float:
+def dipole_level_radius(strength: Real, level: Real, theta: Real, part: str) -> float:
     """The distance r along the ray at angle theta where the point-dipole potential
     phi_2-pole = a/z (10.42) has Phi = level (``part`` "phi") or A = level (``part`` "a"):
     on a ray the potential falls off as 1/r (checked at r = 1 and r = 2), so r is the value

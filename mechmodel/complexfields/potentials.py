@@ -12,7 +12,6 @@ import cmath
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import I_UNIT, Gaussian, Laurent
@@ -30,6 +29,7 @@ from mechmodel.complexfields.derivatives import (
     gradient,
     poly_view,
 )
+from mechmodel.typing import Real
 
 
 def _ratio(num: Laurent, den: Laurent) -> Fraction | Gaussian:
@@ -108,7 +108,7 @@ class LaurentTerm:
     power: int
 
 
-def laurent_derivative(coefficient: Any, power: Any) -> LaurentTerm:
+def laurent_derivative(coefficient: Real, power: int) -> LaurentTerm:
     """d/dz of c z^p: p c z^(p-1) (the power rule); a constant (p = 0) gives zero (10.44)."""
     p = int(power)
     if p != power:
@@ -136,7 +136,7 @@ class PowerAntiderivative:
     inverted_power: int
 
 
-def power_antiderivative(field_power: Any) -> PowerAntiderivative:
+def power_antiderivative(field_power: int) -> PowerAntiderivative:
     """Antiderivative of z^n for an integer n != -1, found by inverting the power rule:
     the m with d/dz z^m proportional to z^n, and the factor that makes it exact."""
     n = int(field_power)
@@ -158,7 +158,7 @@ def power_antiderivative(field_power: Any) -> PowerAntiderivative:
     )
 
 
-def exceptional_power(lowest: Any = -6, highest: Any = 6) -> int:
+def exceptional_power(lowest: int = -6, highest: int = 6) -> int:
     """The only integer power n in [lowest, highest] whose field z^n has no power-law
     potential (9.38)-(10.38): the one where the power rule gives a zero slope."""
     found = []
@@ -189,7 +189,7 @@ class AnalyticPotential:
 
 
 def _analytic_polys(
-    field_power: Any, strength: Gaussian
+    field_power: int, strength: Gaussian
 ) -> tuple[Laurent, Laurent, Laurent, Laurent]:
     """Phi, A, Fx, Fy of f = strength z^n, n >= 0."""
     n = inputs.count(field_power, "field_power")
@@ -200,7 +200,7 @@ def _analytic_polys(
 
 
 def power_field_potential(
-    field_power: Any, strength_re: Any = 1, strength_im: Any = 0
+    field_power: int, strength_re: Real = 1, strength_im: Real = 0
 ) -> AnalyticPotential:
     """The complex potential of the power field a z^n in x, y (10.35a-c), exact."""
     strength = Gaussian(Fraction(strength_re), Fraction(strength_im))
@@ -219,7 +219,7 @@ class FactorPair:
     total: Fraction
 
 
-def complementary_potential_factor(factor: Any) -> FactorPair:
+def complementary_potential_factor(factor: Real) -> FactorPair:
     """The factor j with F = f grad Phi + j curl A, for the field f(z) = z of Fig. 10.7,
     solved at the point (1, 1) and checked on the whole plane (exact)."""
     f = Fraction(factor)
@@ -260,7 +260,7 @@ def _field_point(field: complex, potential: complex) -> FieldPoint:
 
 
 def power_field_at(
-    field_power: Any, x: Any, y: Any, strength_re: Any = 1, strength_im: Any = 0
+    field_power: int, x: Real, y: Real, strength_re: Real = 1, strength_im: Real = 0
 ) -> FieldPoint:
     """The power field f = a z^n at z = x + i y, a = strength_re + i strength_im, with its
     potential: a z^(n+1)/(n+1) from the inverted power rule (``power_antiderivative``), or, for
@@ -278,7 +278,7 @@ def power_field_at(
 
 
 def power_field_polar(
-    field_power: Any, r: Any, theta: Any, strength_re: Any = 1, strength_im: Any = 0
+    field_power: int, r: Real, theta: Real, strength_re: Real = 1, strength_im: Real = 0
 ) -> FieldPoint:
     """``power_field_at`` at the point z = r e^(i theta) (Figs. 10.9-10.14 label their fields
     and potentials in polar form)."""
@@ -286,7 +286,7 @@ def power_field_polar(
     return power_field_at(field_power, z.real, z.imag, strength_re, strength_im)
 
 
-def laurent_potential_at(coefficients: Iterable[Any], lowest: Any, x: Any, y: Any) -> complex:
+def laurent_potential_at(coefficients: Iterable[Real], lowest: int, x: Real, y: Real) -> complex:
     """The potential series of (10.44): for the field sum a_n z^n, n = lowest, lowest + 1, ...
     (one real coefficient a_n each), the sum of the potentials of its terms (``power_field_at``:
     a_n z^(n+1)/(n+1), and a_-1 ln z)."""
@@ -298,7 +298,7 @@ def laurent_potential_at(coefficients: Iterable[Any], lowest: Any, x: Any, y: An
 
 
 def inverted_laurent_potential_at(
-    coefficients: Iterable[Any], lowest: Any, x: Any, y: Any
+    coefficients: Iterable[Real], lowest: int, x: Real, y: Real
 ) -> complex:
     """The potential series of (10.44) with z replaced by w = 1/z, at z = x + i y: the series
     ``laurent_potential_at`` evaluated at the point w (Fig. 10.15 maps z to w = 1/z; ln w is
@@ -307,7 +307,7 @@ def inverted_laurent_potential_at(
     return laurent_potential_at(coefficients, lowest, w.real, w.imag)
 
 
-def analytic_polynomial_at(coefficients: Iterable[Any], x: Any, y: Any) -> complex:
+def analytic_polynomial_at(coefficients: Iterable[Real], x: Real, y: Real) -> complex:
     """f(z) = sum c_k z^k, k = 0, 1, ..., at z = x + i y: a function with no poles, equal to its
     whole Taylor (Maclaurin) series around 0, whose coefficients are c_k = f^(k)(0)/k! (10.45c)."""
     inputs.real(x, "x")

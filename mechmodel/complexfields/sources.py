@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.algebra import I_UNIT, Gaussian, Laurent
@@ -27,6 +26,7 @@ from mechmodel.complexfields.derivatives import (
     zpoly_to_xy,
 )
 from mechmodel.complexfields.potentials import source_field_factors
+from mechmodel.typing import Real
 
 
 @dataclass(frozen=True)
@@ -71,7 +71,7 @@ class _NonAnalyticPolys:
     transverse: tuple[Laurent, Laurent]
 
 
-def _conjugate_power_polys(strength_re: Any, strength_im: Any, power: Any) -> _NonAnalyticPolys:
+def _conjugate_power_polys(strength_re: Real, strength_im: Real, power: int) -> _NonAnalyticPolys:
     """Sources, potentials and fields of f = k (z*)^n as exact polynomials (10.46)-(10.56)."""
     n = inputs.count(power, "power")
     k = Gaussian(Fraction(strength_re), Fraction(strength_im))
@@ -97,7 +97,7 @@ def _conjugate_power_polys(strength_re: Any, strength_im: Any, power: Any) -> _N
     return _NonAnalyticPolys(fstar, s_star, s_star_z, phi_z, big_phi, a, (lx, ly), (tx, ty))
 
 
-def conjugate_power_field(strength_re: Any, strength_im: Any, power: Any) -> NonAnalyticField:
+def conjugate_power_field(strength_re: Real, strength_im: Real, power: int) -> NonAnalyticField:
     """Sources, potentials and fields of f = k (z*)^n, k = strength_re + i strength_im (exact
     for rational k), n >= 0 (10.51)-(10.56)."""
     p = _conjugate_power_polys(strength_re, strength_im, power)
@@ -146,7 +146,7 @@ class SourcePoint:
 
 
 def conjugate_power_field_at(
-    strength_re: Any, strength_im: Any, power: Any, x: Any, y: Any
+    strength_re: Real, strength_im: Real, power: int, x: Real, y: Real
 ) -> SourcePoint:
     """``conjugate_power_field``'s exact polynomials evaluated at the point (x, y) (exact for
     rational x, y and k; floats convert exactly)."""
