@@ -36,288 +36,207 @@ The submodules, each re-exported here (the catalog names ``complexfields.functio
 
 from __future__ import annotations
 
-from mechmodel.complexfields._quadrature import (
-    DIGITS as DIGITS,
-)
-from mechmodel.complexfields._quadrature import (
-    LAURENT_POINTS as LAURENT_POINTS,
-)
-from mechmodel.complexfields._quadrature import (
-    MONOMIAL_POINTS as MONOMIAL_POINTS,
-)
-from mechmodel.complexfields._quadrature import (
-    POINTS as POINTS,
-)
+from mechmodel.complexfields._quadrature import DIGITS, LAURENT_POINTS, MONOMIAL_POINTS, POINTS
 from mechmodel.complexfields.cauchy import (
-    CauchyDerivative as CauchyDerivative,
-)
-from mechmodel.complexfields.cauchy import (
-    CauchyKernel as CauchyKernel,
-)
-from mechmodel.complexfields.cauchy import (
-    LaurentCoefficientCheck as LaurentCoefficientCheck,
-)
-from mechmodel.complexfields.cauchy import (
-    cauchy_derivative as cauchy_derivative,
-)
-from mechmodel.complexfields.cauchy import (
-    cauchy_kernel as cauchy_kernel,
-)
-from mechmodel.complexfields.cauchy import (
-    laurent_coefficient_check as laurent_coefficient_check,
-)
-from mechmodel.complexfields.cauchy import (
-    laurent_weight_at as laurent_weight_at,
-)
-from mechmodel.complexfields.cauchy import (
-    laurent_weight_power as laurent_weight_power,
+    CauchyDerivative,
+    CauchyKernel,
+    LaurentCoefficientCheck,
+    cauchy_derivative,
+    cauchy_kernel,
+    laurent_coefficient_check,
+    laurent_weight_at,
+    laurent_weight_power,
 )
 from mechmodel.complexfields.derivatives import (
-    Z_OF_XY as Z_OF_XY,
-)
-from mechmodel.complexfields.derivatives import (
-    ZSTAR as ZSTAR,
-)
-from mechmodel.complexfields.derivatives import (
-    ZSTAR_OF_XY as ZSTAR_OF_XY,
-)
-from mechmodel.complexfields.derivatives import (
-    ChainRule as ChainRule,
-)
-from mechmodel.complexfields.derivatives import (
-    ComplexPolyView as ComplexPolyView,
-)
-from mechmodel.complexfields.derivatives import (
-    CoordinateInverse as CoordinateInverse,
-)
-from mechmodel.complexfields.derivatives import (
-    LaminarField as LaminarField,
-)
-from mechmodel.complexfields.derivatives import (
-    PlanePoint as PlanePoint,
-)
-from mechmodel.complexfields.derivatives import (
-    PolyView as PolyView,
-)
-from mechmodel.complexfields.derivatives import (
-    X as X,
-)
-from mechmodel.complexfields.derivatives import (
-    Y as Y,
-)
-from mechmodel.complexfields.derivatives import (
-    chain_rule_derivatives as chain_rule_derivatives,
-)
-from mechmodel.complexfields.derivatives import (
-    complex_view as complex_view,
-)
-from mechmodel.complexfields.derivatives import (
-    conjugate_linear_field as conjugate_linear_field,
-)
-from mechmodel.complexfields.derivatives import (
-    conjugate_potential_derivative as conjugate_potential_derivative,
-)
-from mechmodel.complexfields.derivatives import (
-    coordinates_from_z as coordinates_from_z,
-)
-from mechmodel.complexfields.derivatives import (
-    curl_of_z_vector as curl_of_z_vector,
-)
-from mechmodel.complexfields.derivatives import (
-    curl_z as curl_z,
-)
-from mechmodel.complexfields.derivatives import (
-    d_dz as d_dz,
-)
-from mechmodel.complexfields.derivatives import (
-    d_dzstar as d_dzstar,
-)
-from mechmodel.complexfields.derivatives import (
-    divergence as divergence,
-)
-from mechmodel.complexfields.derivatives import (
-    gradient as gradient,
-)
-from mechmodel.complexfields.derivatives import (
-    inverse_coordinates as inverse_coordinates,
-)
-from mechmodel.complexfields.derivatives import (
-    phasor_pair_square as phasor_pair_square,
-)
-from mechmodel.complexfields.derivatives import (
-    poly_view as poly_view,
-)
-from mechmodel.complexfields.derivatives import (
-    zpoly_to_xy as zpoly_to_xy,
+    Z_OF_XY,
+    ZSTAR,
+    ZSTAR_OF_XY,
+    ChainRule,
+    ComplexPolyView,
+    CoordinateInverse,
+    LaminarField,
+    PlanePoint,
+    PolyView,
+    X,
+    Y,
+    chain_rule_derivatives,
+    complex_view,
+    conjugate_linear_field,
+    conjugate_potential_derivative,
+    coordinates_from_z,
+    curl_of_z_vector,
+    curl_z,
+    d_dz,
+    d_dzstar,
+    divergence,
+    gradient,
+    inverse_coordinates,
+    phasor_pair_square,
+    poly_view,
+    zpoly_to_xy,
 )
 from mechmodel.complexfields.loops import (
-    LineSource as LineSource,
-)
-from mechmodel.complexfields.loops import (
-    LoopIntegral as LoopIntegral,
-)
-from mechmodel.complexfields.loops import (
-    LoopPowers as LoopPowers,
-)
-from mechmodel.complexfields.loops import (
-    laurent_loop_integral as laurent_loop_integral,
-)
-from mechmodel.complexfields.loops import (
-    line_source as line_source,
-)
-from mechmodel.complexfields.loops import (
-    nonzero_loop_powers as nonzero_loop_powers,
-)
-from mechmodel.complexfields.loops import (
-    power_loop_integral as power_loop_integral,
+    LineSource,
+    LoopIntegral,
+    LoopPowers,
+    laurent_loop_integral,
+    line_source,
+    nonzero_loop_powers,
+    power_loop_integral,
 )
 from mechmodel.complexfields.maps import (
-    StereographicLengths as StereographicLengths,
-)
-from mechmodel.complexfields.maps import (
-    StereographicPoint as StereographicPoint,
-)
-from mechmodel.complexfields.maps import (
-    stereographic_image_radius as stereographic_image_radius,
-)
-from mechmodel.complexfields.maps import (
-    stereographic_lengths as stereographic_lengths,
-)
-from mechmodel.complexfields.maps import (
-    stereographic_preimage_radius as stereographic_preimage_radius,
-)
-from mechmodel.complexfields.maps import (
-    stereographic_projection as stereographic_projection,
+    StereographicLengths,
+    StereographicPoint,
+    stereographic_image_radius,
+    stereographic_lengths,
+    stereographic_preimage_radius,
+    stereographic_projection,
 )
 from mechmodel.complexfields.multipoles import (
-    DipolePair as DipolePair,
-)
-from mechmodel.complexfields.multipoles import (
-    MultipoleTerm as MultipoleTerm,
-)
-from mechmodel.complexfields.multipoles import (
-    QuadrupoleRelations as QuadrupoleRelations,
-)
-from mechmodel.complexfields.multipoles import (
-    dipole_level_radius as dipole_level_radius,
-)
-from mechmodel.complexfields.multipoles import (
-    dipole_pair as dipole_pair,
-)
-from mechmodel.complexfields.multipoles import (
-    dipole_pair_at as dipole_pair_at,
-)
-from mechmodel.complexfields.multipoles import (
-    dipole_pair_field as dipole_pair_field,
-)
-from mechmodel.complexfields.multipoles import (
-    laurent_term_of_multipole as laurent_term_of_multipole,
-)
-from mechmodel.complexfields.multipoles import (
-    level_line_angle as level_line_angle,
-)
-from mechmodel.complexfields.multipoles import (
-    line_multipole_at as line_multipole_at,
-)
-from mechmodel.complexfields.multipoles import (
-    line_multipole_polar as line_multipole_polar,
-)
-from mechmodel.complexfields.multipoles import (
-    multipole_field as multipole_field,
-)
-from mechmodel.complexfields.multipoles import (
-    multipole_of_laurent_term as multipole_of_laurent_term,
-)
-from mechmodel.complexfields.multipoles import (
-    multipole_pole_count as multipole_pole_count,
-)
-from mechmodel.complexfields.multipoles import (
-    multipole_sources as multipole_sources,
-)
-from mechmodel.complexfields.multipoles import (
-    multipole_term_at as multipole_term_at,
-)
-from mechmodel.complexfields.multipoles import (
-    potential_term_poles as potential_term_poles,
-)
-from mechmodel.complexfields.multipoles import (
-    quadrupole_relations as quadrupole_relations,
+    DipolePair,
+    MultipoleTerm,
+    QuadrupoleRelations,
+    dipole_level_radius,
+    dipole_pair,
+    dipole_pair_at,
+    dipole_pair_field,
+    laurent_term_of_multipole,
+    level_line_angle,
+    line_multipole_at,
+    line_multipole_polar,
+    multipole_field,
+    multipole_of_laurent_term,
+    multipole_pole_count,
+    multipole_sources,
+    multipole_term_at,
+    potential_term_poles,
+    quadrupole_relations,
 )
 from mechmodel.complexfields.potentials import (
-    AnalyticPotential as AnalyticPotential,
-)
-from mechmodel.complexfields.potentials import (
-    FactorPair as FactorPair,
-)
-from mechmodel.complexfields.potentials import (
-    FieldPoint as FieldPoint,
-)
-from mechmodel.complexfields.potentials import (
-    LaurentTerm as LaurentTerm,
-)
-from mechmodel.complexfields.potentials import (
-    PotentialFieldCoefficients as PotentialFieldCoefficients,
-)
-from mechmodel.complexfields.potentials import (
-    PowerAntiderivative as PowerAntiderivative,
-)
-from mechmodel.complexfields.potentials import (
-    SourceFactors as SourceFactors,
-)
-from mechmodel.complexfields.potentials import (
-    analytic_polynomial_at as analytic_polynomial_at,
-)
-from mechmodel.complexfields.potentials import (
-    complementary_potential_factor as complementary_potential_factor,
-)
-from mechmodel.complexfields.potentials import (
-    exceptional_power as exceptional_power,
-)
-from mechmodel.complexfields.potentials import (
-    inverted_laurent_potential_at as inverted_laurent_potential_at,
-)
-from mechmodel.complexfields.potentials import (
-    laurent_derivative as laurent_derivative,
-)
-from mechmodel.complexfields.potentials import (
-    laurent_potential_at as laurent_potential_at,
-)
-from mechmodel.complexfields.potentials import (
-    plot_field as plot_field,
-)
-from mechmodel.complexfields.potentials import (
-    potential_factor_sum as potential_factor_sum,
-)
-from mechmodel.complexfields.potentials import (
-    potential_field_coefficients as potential_field_coefficients,
-)
-from mechmodel.complexfields.potentials import (
-    potential_parts as potential_parts,
-)
-from mechmodel.complexfields.potentials import (
-    power_antiderivative as power_antiderivative,
-)
-from mechmodel.complexfields.potentials import (
-    power_field_at as power_field_at,
-)
-from mechmodel.complexfields.potentials import (
-    power_field_polar as power_field_polar,
-)
-from mechmodel.complexfields.potentials import (
-    power_field_potential as power_field_potential,
-)
-from mechmodel.complexfields.potentials import (
-    source_field_factors as source_field_factors,
+    AnalyticPotential,
+    FactorPair,
+    FieldPoint,
+    LaurentTerm,
+    PotentialFieldCoefficients,
+    PowerAntiderivative,
+    SourceFactors,
+    analytic_polynomial_at,
+    complementary_potential_factor,
+    exceptional_power,
+    inverted_laurent_potential_at,
+    laurent_derivative,
+    laurent_potential_at,
+    plot_field,
+    potential_factor_sum,
+    potential_field_coefficients,
+    potential_parts,
+    power_antiderivative,
+    power_field_at,
+    power_field_polar,
+    power_field_potential,
+    source_field_factors,
 )
 from mechmodel.complexfields.sources import (
-    NonAnalyticField as NonAnalyticField,
+    NonAnalyticField,
+    SourcePoint,
+    conjugate_power_field,
+    conjugate_power_field_at,
 )
-from mechmodel.complexfields.sources import (
-    SourcePoint as SourcePoint,
-)
-from mechmodel.complexfields.sources import (
-    conjugate_power_field as conjugate_power_field,
-)
-from mechmodel.complexfields.sources import (
-    conjugate_power_field_at as conjugate_power_field_at,
-)
+
+__all__ = [
+    "DIGITS",
+    "LAURENT_POINTS",
+    "MONOMIAL_POINTS",
+    "POINTS",
+    "ZSTAR",
+    "ZSTAR_OF_XY",
+    "Z_OF_XY",
+    "AnalyticPotential",
+    "CauchyDerivative",
+    "CauchyKernel",
+    "ChainRule",
+    "ComplexPolyView",
+    "CoordinateInverse",
+    "DipolePair",
+    "FactorPair",
+    "FieldPoint",
+    "LaminarField",
+    "LaurentCoefficientCheck",
+    "LaurentTerm",
+    "LineSource",
+    "LoopIntegral",
+    "LoopPowers",
+    "MultipoleTerm",
+    "NonAnalyticField",
+    "PlanePoint",
+    "PolyView",
+    "PotentialFieldCoefficients",
+    "PowerAntiderivative",
+    "QuadrupoleRelations",
+    "SourceFactors",
+    "SourcePoint",
+    "StereographicLengths",
+    "StereographicPoint",
+    "X",
+    "Y",
+    "analytic_polynomial_at",
+    "cauchy_derivative",
+    "cauchy_kernel",
+    "chain_rule_derivatives",
+    "complementary_potential_factor",
+    "complex_view",
+    "conjugate_linear_field",
+    "conjugate_potential_derivative",
+    "conjugate_power_field",
+    "conjugate_power_field_at",
+    "coordinates_from_z",
+    "curl_of_z_vector",
+    "curl_z",
+    "d_dz",
+    "d_dzstar",
+    "dipole_level_radius",
+    "dipole_pair",
+    "dipole_pair_at",
+    "dipole_pair_field",
+    "divergence",
+    "exceptional_power",
+    "gradient",
+    "inverse_coordinates",
+    "inverted_laurent_potential_at",
+    "laurent_coefficient_check",
+    "laurent_derivative",
+    "laurent_loop_integral",
+    "laurent_potential_at",
+    "laurent_term_of_multipole",
+    "laurent_weight_at",
+    "laurent_weight_power",
+    "level_line_angle",
+    "line_multipole_at",
+    "line_multipole_polar",
+    "line_source",
+    "multipole_field",
+    "multipole_of_laurent_term",
+    "multipole_pole_count",
+    "multipole_sources",
+    "multipole_term_at",
+    "nonzero_loop_powers",
+    "phasor_pair_square",
+    "plot_field",
+    "poly_view",
+    "potential_factor_sum",
+    "potential_field_coefficients",
+    "potential_parts",
+    "potential_term_poles",
+    "power_antiderivative",
+    "power_field_at",
+    "power_field_polar",
+    "power_field_potential",
+    "power_loop_integral",
+    "quadrupole_relations",
+    "source_field_factors",
+    "stereographic_image_radius",
+    "stereographic_lengths",
+    "stereographic_preimage_radius",
+    "stereographic_projection",
+    "zpoly_to_xy",
+]
