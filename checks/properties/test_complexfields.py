@@ -33,10 +33,12 @@ from checks.properties.strategies import (
 )
 from mechmodel import complexfields as cf
 from mechmodel.algebra import I_UNIT, Gaussian, Laurent
+from mechmodel.complexfields import cauchy
 
 pytestmark = pytest.mark.properties
 HALF = Fraction(1, 2)
 EPS = 2.0**-52
+XyTerms = dict[tuple[int, int], tuple[int, int]]  # {(i, j): (re, im)}: (re + i im) x^i y^j
 ONES = {(i, j): (1, 1) for i in range(3) for j in range(3)}  # every term (1 + i) x^i y^j
 NONNEGATIVE_POWERS = field_powers().map(abs)
 
@@ -51,7 +53,7 @@ def xy_poly(terms: dict[tuple[int, int], tuple[int, int]]) -> Laurent:
 
 def z_poly(terms: dict[int, tuple[int, int]]) -> Laurent:
     """An analytic polynomial sum c_k z^k written in x, y."""
-    zs = {(k, 0): gaussian(c) for k, c in terms.items()}
+    zs: dict[tuple[int, ...], Gaussian] = {(k, 0): gaussian(c) for k, c in terms.items()}
     return cf.zpoly_to_xy(Laurent.from_powers(("z", cf.ZSTAR), zs))
 
 
@@ -59,7 +61,9 @@ def view_at(view: cf.PolyView, z: complex) -> float:
     """The real polynomial printed as ``view`` ("x2y1": coefficient of x^2 y) at x + i y."""
     total = 0.0
     for name, c in view.coefficients.items():
-        i, j = map(int, re.fullmatch(r"x(\d+)y(\d+)", name).groups())
+        match = re.fullmatch(r"x(\d+)y(\d+)", name)
+        assert match is not None
+        i, j = map(int, match.groups())
         total += float(c) * z.real**i * z.imag**j
     return total
 
@@ -79,7 +83,7 @@ def combined(*weighted: tuple[Fraction, cf.PolyView]) -> dict[str, Fraction]:
 @given(xy_polynomials(), gaussian_integers())
 @example(ONES, (2, 1))
 def test_a_polynomial_in_z_and_zstar_keeps_its_values_in_x_and_y(
-    terms: dict, point: tuple[int, int]
+    terms: XyTerms, point: tuple[int, int]
 ) -> None:
     """A polynomial in z, z* rewritten in x, y (z = x + i y, z* = x - i y, (10.31)) has at the
     real point (x, y) the value it has at z = x + i y, z* = x - i y."""
@@ -91,7 +95,7 @@ def test_a_polynomial_in_z_and_zstar_keeps_its_values_in_x_and_y(
 
 @given(xy_polynomials(), st.integers(1, 12))
 @example({(i, j): (0, 0) for i in range(3) for j in range(3)}, 1)  # the zero polynomial
-def test_a_printed_polynomial_is_over_its_least_common_denominator(terms: dict, q: int) -> None:
+def test_a_printed_polynomial_is_over_its_least_common_denominator(terms: XyTerms, q: int) -> None:
     """The book prints a real polynomial over the least common denominator of its
     coefficients, (3x^2 + y^2)/2 (10.35), (10.54): numerator/denominator gives back each
     coefficient, no integer above 1 divides the denominator and all numerators (the zero
@@ -113,7 +117,7 @@ def test_a_printed_polynomial_is_over_its_least_common_denominator(terms: dict, 
 
 
 @given(xy_polynomials())
-def test_z_derivatives_follow_the_chain_rule_and_hold_div_and_curl(terms: dict) -> None:
+def test_z_derivatives_follow_the_chain_rule_and_hold_div_and_curl(terms: XyTerms) -> None:
     """df/dz = (1/2)(df/dx - i df/dy) and df/dz* = (1/2)(df/dx + i df/dy) for every polynomial
     f(x, y) (10.31), the model's factors coming from inverting z = x + iy, z* = x - iy; and
     for f = Fx + i Fy, df/dz = (1/2) div F + (i/2) curl F (10.32)."""
@@ -127,7 +131,7 @@ def test_z_derivatives_follow_the_chain_rule_and_hold_div_and_curl(terms: dict) 
 
 
 @given(analytic_polynomials())
-def test_analytic_potentials_obey_cauchy_riemann(terms: dict) -> None:
+def test_analytic_potentials_obey_cauchy_riemann(terms: dict[int, tuple[int, int]]) -> None:
     """A potential phi = Phi + iA analytic in z has dphi/dz* = 0 and d/dz the ordinary
     derivative (10.31)-(10.33); dPhi/dx = dA/dy and dPhi/dy = -dA/dx, so F = grad Phi = curl A
     (10.35b-c), and the level curves of Phi and A cross at right angles (grad Phi . grad A = 0)."""
@@ -168,7 +172,10 @@ def test_the_laminar_field_has_no_divergence_and_no_curl(a: tuple[int, int], z: 
     assert_close(view_at(field.field_x, z), fx, rel=0, abs=tol)
     assert_close(view_at(field.field_y, z), fy, rel=0, abs=tol)
     unit = cf.conjugate_linear_field()
-    assert (unit.field_x.coefficients, unit.field_y.coefficients) == ({"x1y0": 1}, {"x0y1": -1})
+    assert (unit.field_x.coefficients, unit.field_y.coefficients) == (
+        {"x1y0": Fraction(1)},
+        {"x0y1": Fraction(-1)},
+    )
 
 
 @given(small_fractions())
@@ -221,7 +228,7 @@ def test_the_power_potential_differentiates_back_to_its_field(n: int) -> None:
     """d/dz [z^(n+1)/(n+1)] = z^n for every n but -1 (10.35a), (10.44)."""
     anti = cf.power_antiderivative(n)
     back = cf.laurent_derivative(anti.coefficient, anti.power)
-    assert (back.coefficient, back.power) == (1, n)
+    assert (back.coefficient, back.power) == (Fraction(1), n)
 
 
 @given(st.integers(-8, 6), st.integers(-8, 6))
@@ -317,7 +324,9 @@ def test_the_quadrupole_factors_are_exact() -> None:
 @given(
     laurent_terms().map(lambda ts: [t for t in ts if t[2] >= 0] or [(1.0, 0.0, 0)]), loop_circles()
 )
-def test_the_loop_integral_of_an_analytic_function_vanishes(terms: list, circle: tuple) -> None:
+def test_the_loop_integral_of_an_analytic_function_vanishes(
+    terms: list[tuple[float, float, int]], circle: tuple[float, float, float]
+) -> None:
     """Cauchy's theorem: a polynomial (analytic everywhere) has zero loop integral around any
     circle (10.39)."""
     loop = cf.laurent_loop_integral([list(t) for t in terms], *circle)
@@ -338,7 +347,9 @@ def test_the_loop_integral_of_an_analytic_function_vanishes(terms: list, circle:
 
 @given(laurent_terms(), loop_circles())
 @example([(7.0, -3.0, -1)], (0.0, 0.0, 2.0))
-def test_a_pole_gives_its_residue(terms: list, circle: tuple) -> None:
+def test_a_pole_gives_its_residue(
+    terms: list[tuple[float, float, int]], circle: tuple[float, float, float]
+) -> None:
     """The loop integral of sum c_k z^k is 2 pi i c_-1 if the circle encloses the pole at the
     origin and zero if it does not (10.39), (10.44). The error estimate of the double-precision
     rule never claims more than double precision: it is at least eps |result|."""
@@ -394,7 +405,9 @@ def test_only_the_monopole_term_has_a_loop_integral(n: int) -> None:
 
 
 @given(gaussian_integers())
-def test_a_line_source_has_flux_2_pi_re_a_and_circulation_minus_2_pi_im_a(a: tuple) -> None:
+def test_a_line_source_has_flux_2_pi_re_a_and_circulation_minus_2_pi_im_a(
+    a: tuple[int, int],
+) -> None:
     """Im loop f dz counts the real source (flux) and Re loop f dz the imaginary source
     (vorticity) of f = a/z (10.37)-(10.39), Figs. 10.9-10.10."""
     src = cf.line_source(*a)
@@ -426,7 +439,7 @@ def test_cauchys_derivative_formula_holds_for_every_order(order: int) -> None:
     assert_close(d.two_pi.value, 2 * math.pi, rel=0, abs=d.two_pi.error + 1e-14)
     # the integral is 2 pi/|b - a|^(n+1) while the integrand reaches r^-n/(|b - a| + r) on the
     # circle |z - a| = r: at DIGITS digits, that cancellation bounds the relative precision
-    distance, r = abs(cf._CAUCHY_POLE - cf._CAUCHY_CENTER), cf._CAUCHY_RADIUS
+    distance, r = abs(cauchy._CAUCHY_POLE - cauchy._CAUCHY_CENTER), cauchy._CAUCHY_RADIUS
     floor = 10.0**-cf.DIGITS * (distance / r) ** order * distance / (distance + r)
     for part, size in ((d.two_pi, 2 * math.pi), (d.numerator, math.factorial(order))):
         assert part.error >= floor * size
@@ -475,7 +488,7 @@ def test_the_stereographic_map_inverts_radii_through_half_angles(
 
 
 @given(gaussian_integers(), NONNEGATIVE_POWERS)
-def test_sources_and_potentials_rebuild_the_non_analytic_field(k: tuple, n: int) -> None:
+def test_sources_and_potentials_rebuild_the_non_analytic_field(k: tuple[int, int], n: int) -> None:
     """For f = k (z*)^n: rho = div fL* = div f* and I = -curl fT* = -curl f* (10.48), (10.54);
     the longitudinal part has no curl and the transverse part no divergence, and
     fL* + fT* = f* = k* z^n (10.50a): the potentials of phi = (1/2) integral f dz rebuild the
@@ -495,7 +508,11 @@ def test_the_definition_factors_make_rho_the_divergence() -> None:
     """s* = 2 df*/dz and f* = 2 dphi*/dz* (10.46)-(10.47): both factors are 2, and phi takes
     the prefactor 1/2."""
     factors = cf.source_field_factors()
-    assert (factors.source, factors.potential, factors.potential_prefactor) == (2, 2, HALF)
+    assert (factors.source, factors.potential, factors.potential_prefactor) == (
+        Fraction(2),
+        Fraction(2),
+        HALF,
+    )
 
 
 # --- formulas at a point (the models of the formula claims) ----------------------------------
@@ -537,7 +554,9 @@ def test_phasor_sums_obey_the_parallelogram_law(
 
 
 @given(field_powers(), gaussian_integers(), off_origin_points())
-def test_power_potentials_differentiate_to_their_fields(n: int, a: tuple, z: complex) -> None:
+def test_power_potentials_differentiate_to_their_fields(
+    n: int, a: tuple[int, int], z: complex
+) -> None:
     """The potential of f = a z^n has dphi/dz = f along x and along y (10.33a): a z^(n+1)/(n+1),
     and a ln z for n = -1 (10.38); Phi and A are its real and imaginary parts and the plotted
     vector is f* (10.33b); the polar form gives the same point (Figs. 10.9-10.14)."""
@@ -651,7 +670,7 @@ def test_dipole_level_lines_pass_through_their_level(a: float, level: float, the
 
 @given(st.lists(COEFFICIENTS, min_size=1, max_size=8), st.integers(-4, 1), off_origin_points())
 def test_laurent_potentials_differentiate_to_their_series(
-    coeffs: list, lowest: int, z: complex
+    coeffs: list[float], lowest: int, z: complex
 ) -> None:
     """The potential series of (10.44) differentiates term by term to the field series
     sum a_n z^n; with z replaced by w = 1/z it is the same series evaluated at w."""
@@ -681,7 +700,7 @@ def test_the_laurent_weight_is_z_to_minus_n_minus_one(index: int) -> None:
 
 
 @given(st.lists(COEFFICIENTS, min_size=1, max_size=6), off_origin_points())
-def test_a_polynomial_is_its_own_taylor_series(coeffs: list, z: complex) -> None:
+def test_a_polynomial_is_its_own_taylor_series(coeffs: list[float], z: complex) -> None:
     """f(z) = sum c_k z^k, k >= 0: f(0) = c_0 (the n = 0 term of (10.45c)) and f'(0) = c_1."""
     f = cf.analytic_polynomial_at(coeffs, z.real, z.imag)
     assert abs(f - sum(c * z**k for k, c in enumerate(coeffs))) <= 1e-9 * (1 + abs(f))
@@ -693,7 +712,9 @@ def test_a_polynomial_is_its_own_taylor_series(coeffs: list, z: complex) -> None
 
 
 @given(gaussian_integers(), NONNEGATIVE_POWERS, off_origin_points())
-def test_non_analytic_fields_at_a_point_are_their_polynomials(k: tuple, n: int, z: complex) -> None:
+def test_non_analytic_fields_at_a_point_are_their_polynomials(
+    k: tuple[int, int], n: int, z: complex
+) -> None:
     """At every point the sources, potentials and fields of f = k (z*)^n are the values of the
     printed polynomials (10.51)-(10.56); fL* + fT* = f* = k* z^n, and s* = 2 df*/dz is twice
     (1/2)(d/dx - i d/dy) of f* by central differences (10.46a)."""
@@ -752,7 +773,9 @@ def test_the_inverse_map_rebuilds_x_and_y_from_z_and_zstar(x: float, y: float) -
 
 
 @given(gaussian_integers(), gaussian_integers(), gaussian_integers())
-def test_the_chain_rule_sees_z_and_zstar_apart(c: tuple, p: tuple, q: tuple) -> None:
+def test_the_chain_rule_sees_z_and_zstar_apart(
+    c: tuple[int, int], p: tuple[int, int], q: tuple[int, int]
+) -> None:
     """For an analytic f (df/dy = i df/dx, Cauchy-Riemann) df/dz is df/dx and df/dz* = 0; for
     f = c z*, df/dz = 0 and df/dz* = c; both derivatives are linear in the partials (10.31).
     The conjugate potential phi* = Phi - iA of an analytic phi with dphi/dz = f has

@@ -21,6 +21,8 @@ from mechmodel.complexfields import (
 from reports.figures import figure, value_of
 
 if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
@@ -41,7 +43,7 @@ def _finite(function: Callable[[complex], tuple[float, float]], z: complex) -> t
         return math.nan, math.nan
 
 
-def _without_jumps(values: object, jump: float) -> object:
+def _without_jumps(values: npt.NDArray[np.float64], jump: float) -> npt.NDArray[np.float64]:
     """``values`` with NaN on both sides of every jump larger than ``jump`` between grid
     neighbours: a branch cut (the 2 pi of ln z), or the last cells around a pole, where the
     level lines would otherwise pile up into one thick line."""
