@@ -18,8 +18,9 @@ Fractions (exact where only + - * / are used).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import cast, overload
 
 from mechmodel import inputs
 from mechmodel.algebra import polynomial_derivative, polynomial_integral
@@ -27,11 +28,12 @@ from mechmodel.numeric import complex_step_derivative
 from mechmodel.softcontact import INTEGRATORS as INTEGRATORS
 from mechmodel.softcontact import SoftCollision as SoftCollision
 from mechmodel.softcontact import soft_collision as soft_collision
+from mechmodel.typing import Real, Scalar, Symbolic
 
 # --- the dent: Fig. 7.1, (7.1)-(7.4) ---------------------------------------------------------
 
 
-def flat_spot_radius(radius: Any, depth: Any) -> float:
+def flat_spot_radius(radius: Real, depth: Real) -> float:
     """Radius r of the flat a ball of radius R shows when pressed a depth x flat (7.1a).
 
     Thales: r is the geometric mean of the depth x and the rest of the diameter, 2R - x.
@@ -43,7 +45,7 @@ def flat_spot_radius(radius: Any, depth: Any) -> float:
     return math.sqrt(depth * (radius + radius - depth))
 
 
-def flat_area_slope(radius: Any, depth: Any) -> float:
+def flat_area_slope(radius: Real, depth: Real) -> float:
     """d(r^2)/dx of the flat's squared radius at depth x: 2R - 2x; at x = 0 the 2 of
     r^2 ~ 2 R x (7.1a), and of the sagitta x ~ r^2 / 2R (7.1b)."""
     inputs.positive(radius, "radius")
@@ -51,7 +53,7 @@ def flat_area_slope(radius: Any, depth: Any) -> float:
     return complex_step_derivative(lambda x: x * (radius + radius - x), depth)
 
 
-def flat_radius_shallow(radius: Any, depth: Any) -> float:
+def flat_radius_shallow(radius: Real, depth: Real) -> float:
     """Radius of the flat of a shallow dent, x << R, to leading order in x (7.1a).
 
     r^2 = x (2R - x) vanishes at first contact; its leading term is the slope d(r^2)/dx there
@@ -64,7 +66,7 @@ def flat_radius_shallow(radius: Any, depth: Any) -> float:
     return math.sqrt(flat_area_slope(radius, 0) * depth)
 
 
-def sagitta_small_flat(radius: Any, flat_radius: Any) -> Any:
+def sagitta_small_flat(radius: Real, flat_radius: Real) -> float:
     """Depth x of the dent whose flat has a small radius r << R, to leading order: the bow
     formula of (7.1b). Inverting r^2 = x (2R - x) at first order in x, x ~ r^2 / (d(r^2)/dx at
     x = 0), where ``flat_area_slope`` gives the slope."""
@@ -73,14 +75,14 @@ def sagitta_small_flat(radius: Any, flat_radius: Any) -> Any:
     return flat_radius * flat_radius / flat_area_slope(radius, 0)
 
 
-def flat_area(radius: Any, depth: Any) -> float:
+def flat_area(radius: Real, depth: Real) -> float:
     """Area pi r^2 of the flat at depth x, the integrand of the dent's volume (7.4): the flat's
     radius from Thales (``flat_spot_radius``), squared."""
     r = flat_spot_radius(radius, depth)
     return math.pi * r * r
 
 
-def sagitta(radius: Any, flat_radius: Any) -> float:
+def sagitta(radius: Real, flat_radius: Real) -> float:
     """Depth x of the dent whose flat has radius r, exactly: R - sqrt(R^2 - r^2) (7.1b).
 
     For r << R this is r^2 / 2R, the bow (sagitta) formula of thin lenses.
@@ -92,14 +94,14 @@ def sagitta(radius: Any, flat_radius: Any) -> float:
     return radius - math.sqrt(radius * radius - flat_radius * flat_radius)
 
 
-def balloon_force(pressure: Any, radius: Any, depth: Any) -> float:
+def balloon_force(pressure: Real, radius: Real, depth: Real) -> float:
     """Force of a balloon of pressure P pressed a depth x flat, P pi r^2 (7.2), N."""
     inputs.positive(pressure, "pressure")
     r = flat_spot_radius(radius, depth)
     return pressure * math.pi * r * r
 
 
-def balloon_stiffness(pressure: Any, radius: Any, depth: Any) -> float:
+def balloon_stiffness(pressure: Real, radius: Real, depth: Real) -> float:
     """Spring constant dF/dx of the balloon at depth x, N/m: at x = 0, 2 pi P R (7.2)."""
     inputs.positive(pressure, "pressure")
     inputs.positive(radius, "radius")
@@ -107,7 +109,7 @@ def balloon_stiffness(pressure: Any, radius: Any, depth: Any) -> float:
     return complex_step_derivative(lambda x: pressure * math.pi * x * (radius + radius - x), depth)
 
 
-def balloon_force_shallow(pressure: Any, radius: Any, depth: Any) -> float:
+def balloon_force_shallow(pressure: Real, radius: Real, depth: Real) -> float:
     """Force of a balloon pressed a shallow depth x << R flat, to first order in x (7.2): its
     spring constant at first contact (``balloon_stiffness`` at x = 0) times x, N."""
     inputs.real(depth, "depth")
@@ -125,25 +127,30 @@ class DentVolume:
     ``whole_ball_power`` the power of R in it.
     """
 
-    volume: Any
-    quadratic_power: Any
-    cubic_power: Any
-    cubic_denominator: Any
+    volume: float
+    quadratic_power: int
+    cubic_power: int
+    cubic_denominator: Real
     small_dent_power: float
-    whole_ball: Any
+    whole_ball: Real
     whole_ball_power: float
 
 
-def _dent_polynomial(radius: Any) -> list[Any]:
+def _dent_polynomial(radius: Scalar) -> list[Scalar]:
     """pi r(x)^2 / pi = x (2R - x) = 2R x - x^2, coefficients by power of x."""
     return [0, radius + radius, -1]
 
 
-def _dent_volume_over_pi(radius: Any, depth: Any) -> Any:
+@overload
+def _dent_volume_over_pi(radius: Real, depth: Real) -> Real: ...
+@overload
+def _dent_volume_over_pi(radius: Scalar, depth: Scalar) -> Scalar: ...
+def _dent_volume_over_pi(radius: Scalar, depth: Scalar) -> Scalar:
+    """The dent's volume over pi, exact for rationals; complex for the complex step."""
     return polynomial_integral(_dent_polynomial(radius), depth)
 
 
-def dent_volume(radius: Any, depth: Any) -> DentVolume:
+def dent_volume(radius: Real, depth: Real) -> DentVolume:
     """Volume of the dent of depth X in a ball of radius R, by integrating the flat's area
     pi r(x)^2 over the depth (7.4). Exact (over pi) with Fraction inputs."""
     inputs.positive(radius, "radius")
@@ -166,7 +173,7 @@ def dent_volume(radius: Any, depth: Any) -> DentVolume:
     )
 
 
-def dent_volume_shallow(radius: Any, depth: Any) -> float:
+def dent_volume_shallow(radius: Real, depth: Real) -> float:
     """Volume of a shallow dent, X << R, to leading order (7.4): the lowest-order term of the
     integrand pi r(x)^2 = pi x (2R - x) (the power series of ``_dent_polynomial``), integrated
     from 0 to X."""
@@ -180,16 +187,17 @@ def dent_volume_shallow(radius: Any, depth: Any) -> float:
     return math.pi * polynomial_integral(leading, depth)
 
 
-def whole_ball_volume(radius: Any) -> float:
+def whole_ball_volume(radius: Real) -> float:
     """Volume of the whole ball by the dent integral (7.4): the dent as deep as the diameter,
     V(2R), which the book checks against the ball's volume."""
     inputs.positive(radius, "radius")
     return dent_volume(radius, radius + radius).volume
 
 
-def _local_power(f: Any, x: float) -> float:
-    """d ln f / d ln x by the complex step (f analytic and positive at x)."""
-    return x * complex_step_derivative(f, x) / float(f(x))
+def _local_power(f: Callable[[Scalar], Scalar], x: float) -> float:
+    """d ln f / d ln x by the complex step (f analytic and positive at x, real on the real
+    axis)."""
+    return x * complex_step_derivative(f, x) / float(f(x).real)
 
 
 # --- stopping the daredevil: Figs. 7.3-7.4, (7.7)-(7.8) ---------------------------------------
@@ -206,12 +214,12 @@ class ConstantTarget:
     the weight acting during the stop is left out: the target removes the fall's energy M g h.
     """
 
-    force: Any
-    potential_slope: Any
-    energy: Any
+    force: Real
+    potential_slope: Real
+    energy: Real
 
 
-def constant_force_target(fall_height: Any, stop_distance: Any) -> ConstantTarget:
+def constant_force_target(fall_height: Real, stop_distance: Real) -> ConstantTarget:
     """The constant target stopping a fall from ``fall_height`` within ``stop_distance``."""
     inputs.positive(fall_height, "fall_height")
     inputs.positive(stop_distance, "stop_distance")
@@ -219,27 +227,29 @@ def constant_force_target(fall_height: Any, stop_distance: Any) -> ConstantTarge
     return ConstantTarget(force=force, potential_slope=-force, energy=fall_height)
 
 
-def stopping_force_reduction(fall_height: Any, distance_before: Any, distance_after: Any) -> Any:
+def stopping_force_reduction(
+    fall_height: Real, distance_before: Real, distance_after: Real
+) -> Real:
     """Factor by which the stopping force falls when the stopping distance grows (Fig. 7.3c)."""
     before = constant_force_target(fall_height, distance_before).force
     return before / constant_force_target(fall_height, distance_after).force
 
 
-def deceleration(force_per_weight: Any, g: Any) -> Any:
+def deceleration(force_per_weight: Real, g: Real) -> Real:
     """Deceleration, m/s^2, of a body pushed by ``force_per_weight`` times its weight (30 g)."""
     inputs.positive(force_per_weight, "force_per_weight")
     inputs.real(g, "g")
-    return force_per_weight * abs(g)
+    return force_per_weight * cast(Real, abs(g))  # mypy joins abs over a union to object
 
 
-def work_of_constant_force(force: Any, distance: Any) -> Any:
+def work_of_constant_force(force: Real, distance: Real) -> Real:
     """Work (area under F vs. y) of a constant force over a distance, F d (7.5a)."""
     inputs.real(force, "force")
     inputs.real(distance, "distance")
     return force * distance
 
 
-def ramp_work(force: Any, distance: Any) -> Any:
+def ramp_work(force: Real, distance: Real) -> Real:
     """Work of a force rising linearly from 0 to ``force`` over ``distance``: the triangle's area
     F d / 2 (the "factor of 1/2" before (7.8)). Integrated term by term: exact with Fractions."""
     inputs.real(force, "force")
@@ -267,11 +277,11 @@ class LinearTarget:
     stop_m: float
     stop_depth_m: float
     max_force: float
-    energy: float
+    energy: Real
     total_stop: float
 
 
-def linear_target(quadratic: Any, fall_height: Any, fall_height_m: Any) -> LinearTarget:
+def linear_target(quadratic: Real, fall_height: Real, fall_height_m: Real) -> LinearTarget:
     """Stop of a fall from ``fall_height`` (graph units; ``fall_height_m`` in metres) by the
     target potential ``quadratic`` y^2 (Fig. 7.4: 8 y^2 for the hardball)."""
     inputs.positive(quadratic, "quadratic")
@@ -298,13 +308,13 @@ class QuadraticForce:
     """The force f(y) = -du/dy of u(y) = a y^2 + b y: ``slope`` -2a and ``constant`` -b, and
     their sizes (the book prints the minus signs outside: f(y) = -16y - 1)."""
 
-    slope: Any
-    constant: Any
-    slope_magnitude: Any
-    constant_magnitude: Any
+    slope: Real
+    constant: Real
+    slope_magnitude: Real
+    constant_magnitude: Real
 
 
-def quadratic_potential_force(a: Any, b: Any) -> QuadraticForce:
+def quadratic_potential_force(a: Real, b: Real) -> QuadraticForce:
     """Force of the total potential u = a y^2 + b y (Fig. 7.4): f = -2a y - b. Exact with
     Fractions (the power rule on the coefficients)."""
     inputs.real(a, "a")
@@ -319,13 +329,13 @@ class Vertex:
     ``shift_denominator`` = -b / (a y_shift), the 2 of b / 2a, and ``depth_denominator`` =
     -b^2 / (a u_shift), the 4 of b^2 / 4a."""
 
-    y_shift: Any
-    u_shift: Any
-    shift_denominator: Any
-    depth_denominator: Any
+    y_shift: Real
+    u_shift: Real
+    shift_denominator: Real
+    depth_denominator: Real
 
 
-def parabola_vertex(a: Any, b: Any) -> Vertex:
+def parabola_vertex(a: Real, b: Real) -> Vertex:
     """Where U = a y^2 + b y is lowest (dU/dy = 0) and how low (7.8): exact with Fractions."""
     inputs.real(a, "a")
     inputs.real(b, "b")
@@ -337,7 +347,7 @@ def parabola_vertex(a: Any, b: Any) -> Vertex:
     return Vertex(y, u, -b / (a * y), -b * b / (a * u))
 
 
-def quadratic_potential(a: Any, b: Any, y: Any) -> Any:
+def quadratic_potential(a: Symbolic, b: Symbolic, y: Symbolic) -> Symbolic:
     """The total potential U(y) = a y^2 + b y of (7.8a): a target's quadratic a y^2 and the
     linear potential b y of gravity. Plain operators (exact, symbolic)."""
     return a * y * y + b * y
