@@ -19,7 +19,6 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.exact import exact_sqrt
@@ -34,9 +33,10 @@ from mechmodel.planar import (
     matrix_product,
     rotation,
 )
+from mechmodel.typing import Real, Symbolic
 
 
-def rational_phase(half_angle_tan: Any) -> Vector:
+def rational_phase(half_angle_tan: Real) -> Vector:
     """(cos u, sin u) of the phase u with tan(u/2) = ``half_angle_tan``: the rational
     parametrization ((1 - s^2)/(1 + s^2), 2s/(1 + s^2)) of the unit circle, exact for
     ``Fraction`` s, so that orbit points can be exact."""
@@ -46,29 +46,35 @@ def rational_phase(half_angle_tan: Any) -> Vector:
     return ((1 - s * s) / (1 + s * s), 2 * s / (1 + s * s))
 
 
-def _reciprocal(x: Any) -> Any:
+def _reciprocal(x: Real) -> Real:
     return Fraction(1, x) if isinstance(x, int) else 1 / x
 
 
-def slope_operator(a: Any, b: Any) -> Matrix:
+def slope_operator(a: Real, b: Real) -> Matrix:
     """R = diag(1/a, 1/b): it multiplies the slope y/x of a vector by a/b (11.12a)."""
     check_semi_axes(a, b)
     return ((_reciprocal(a), 0), (0, _reciprocal(b)))
 
 
-def ellipse_form(a: Any, b: Any) -> Matrix:
+def ellipse_form(a: Real, b: Real) -> Matrix:
     """Q = R^2 = diag(1/a^2, 1/b^2), the matrix of the ellipse x^2/a^2 + y^2/b^2 = r.Q.r = 1
     ((11.7), (11.8a), (11.13))."""
     r = slope_operator(a, b)
     return matrix_product(r, r)
 
 
-def form_value(matrix: Matrix, vector: Sequence[Any]) -> Any:
+def form_value(matrix: Matrix, vector: Sequence[Symbolic]) -> Symbolic:
     """The quadratic form r.M.r (11.7), (11.20)."""
     return dot(vector, apply(matrix, vector))
 
 
-def quadratic_form(A: Any, B: Any, C: Any, x: Any, y: Any) -> Any:  # noqa: N803
+def quadratic_form(
+    A: Symbolic,
+    B: Symbolic,
+    C: Symbolic,
+    x: Symbolic,
+    y: Symbolic,  # noqa: N803
+) -> Symbolic:
     """The form (x y).(A B; B C).(x y) of (11.20), by the matrix products (plain operators:
     exact for rationals, an expression for sympy symbols)."""
     return form_value(((A, B), (B, C)), (x, y))
@@ -81,15 +87,15 @@ class DualityProducts:
 
     r: Vector
     p: Vector
-    rdot_dot_p: Any
-    pdot_dot_r: Any
-    p_dot_r: Any
-    pdot_dot_rdot: Any
-    r_form: Any
-    p_dual_form: Any
+    rdot_dot_p: Real
+    pdot_dot_r: Real
+    p_dot_r: Real
+    pdot_dot_rdot: Real
+    r_form: Real
+    p_dual_form: Real
 
 
-def duality_products(a: Any, b: Any, half_angle_tan: Any) -> DualityProducts:
+def duality_products(a: Real, b: Real, half_angle_tan: Real) -> DualityProducts:
     """The duality of the Q-ellipse and its p-ellipse at the orbit point of phase u,
     tan(u/2) = ``half_angle_tan`` (exact for rationals): r.v = ... p = Q.r is perpendicular to
     the velocity (r'.p = 0 = p'.r) and projects to 1 on r (p.r = p'.r' = 1); p lies on the
@@ -117,20 +123,20 @@ class EllipseParameters:
     """An ellipse of a quadratic form: ``radius`` along the direction ``angle`` (radians, in
     (-pi/2, pi/2]), ``other_radius`` across it; ``kind`` is the conic's name."""
 
-    radius: Any
-    other_radius: Any
+    radius: Real
+    other_radius: Real
     angle: float
     kind: str
 
 
-def form_eigenvalues(A: Any, B: Any, C: Any) -> tuple[Any, Any]:  # noqa: N803
+def form_eigenvalues(A: Real, B: Real, C: Real) -> tuple[Real, Real]:  # noqa: N803
     """Eigenvalues (larger, smaller) of the symmetric matrix (A B; B C)."""
     mean = (A + C) / 2
     spread = exact_sqrt(((A - C) / 2) ** 2 + B * B)
     return mean + spread, mean - spread
 
 
-def conic_type(A: Any, B: Any, C: Any) -> str:  # noqa: N803
+def conic_type(A: Real, B: Real, C: Real) -> str:  # noqa: N803
     """Curve of r.(A B; B C).r = 1 (11.20): an ellipse for two positive eigenvalues, a
     hyperbola for eigenvalues of opposite sign (exercise 1.11.1(c)), parallel lines for one zero
     and one positive eigenvalue, else no real points."""
@@ -144,7 +150,7 @@ def conic_type(A: Any, B: Any, C: Any) -> str:  # noqa: N803
     return "empty"
 
 
-def ellipse_from_form(A: Any, B: Any, C: Any) -> EllipseParameters:  # noqa: N803
+def ellipse_from_form(A: Real, B: Real, C: Real) -> EllipseParameters:  # noqa: N803
     """Radii and orientation of the conic r.(A B; B C).r = 1 (exercise 1.11.1(a)): writing
     (A B; B C) = Rot(t) diag(l1, l2) Rot(-t) gives A - C = (l1 - l2) cos 2t and
     2B = (l1 - l2) sin 2t, so t = atan2(2B, A - C)/2 points along the eigenvalue l1 >= l2, and
@@ -163,12 +169,12 @@ def ellipse_from_form(A: Any, B: Any, C: Any) -> EllipseParameters:  # noqa: N80
 class QuadraticForm:
     """The symmetric matrix (A B; B C) of a form A x^2 + 2B xy + C y^2 (11.20)."""
 
-    A: Any
-    B: Any
-    C: Any
+    A: Real
+    B: Real
+    C: Real
 
 
-def rotated_form(a: Any, b: Any, angle: Any) -> QuadraticForm:
+def rotated_form(a: Real, b: Real, angle: Real) -> QuadraticForm:
     """The ellipse of radii a, b turned by ``angle``: Q' = Rot Q Rot^-1 (exercise 1.11.1(a));
     B != 0 marks a rotated ellipse (text after Fig. 11.7)."""
     rot = rotation(angle)
@@ -180,13 +186,13 @@ def rotated_form(a: Any, b: Any, angle: Any) -> QuadraticForm:
 class DualEllipse:
     """The p-ellipse p.Q^-1.p = 1: radii along x and y, and those radii times a and b."""
 
-    radius_x: Any
-    radius_y: Any
-    radius_x_times_a: Any
-    radius_y_times_b: Any
+    radius_x: Real
+    radius_y: Real
+    radius_x_times_a: Real
+    radius_y_times_b: Real
 
 
-def dual_ellipse(a: Any, b: Any) -> DualEllipse:
+def dual_ellipse(a: Real, b: Real) -> DualEllipse:
     """Radii of the ellipse p.Q^-1.p = 1 traced by p = Q.r: the inverse (1/a, 1/b) of the
     Q-ellipse radii (11.9). From the diagonal of Q^-1: radius = 1/sqrt(entry)."""
     qi = matrix_inverse(ellipse_form(a, b))
@@ -195,20 +201,20 @@ def dual_ellipse(a: Any, b: Any) -> DualEllipse:
     return DualEllipse(rx, ry, rx * a, ry * b)
 
 
-def dual_vector(a: Any, b: Any, phi: Any) -> Vector:
+def dual_vector(a: Real, b: Real, phi: Real) -> Vector:
     """The vector p = Q.r of the orbit point r = (a cos phi, b sin phi), phi the time-phase
     angle (11.8): the matrix Q = diag(1/a^2, 1/b^2) applied to r."""
     inputs.real(phi, "phi")
     return apply(ellipse_form(a, b), (a * math.cos(phi), b * math.sin(phi)))
 
 
-def operator_image(a: Any, b: Any, power: Any, x: Any, y: Any) -> Vector:
+def operator_image(a: Real, b: Real, power: int, x: Real, y: Real) -> Vector:
     """R^power applied to the vector (x, y), R = diag(1/a, 1/b) ((11.12)-(11.13): power 2 is
     Q.r, power -2 is Q^-1.r)."""
     return apply(matrix_power(slope_operator(a, b), power), (x, y))
 
 
-def image_slope(a: Any, b: Any, power: Any, angle: Any) -> float:
+def image_slope(a: Real, b: Real, power: int, angle: Real) -> float:
     """Slope tan of the polar angle of R^power applied to a vector of polar angle ``angle``
     ((11.16): p(phi_k+1) = Q.r(phi_k-1) for power 2)."""
     inputs.real(angle, "angle")
@@ -220,13 +226,13 @@ def image_slope(a: Any, b: Any, power: Any, angle: Any) -> float:
 class ScaledRadii:
     """Radii scaled by the geometric mean S = sqrt(ab): a_S = a/S, b_S = b/S, and a_S b_S."""
 
-    scale: Any
-    a_scaled: Any
-    b_scaled: Any
-    product: Any
+    scale: Real
+    a_scaled: Real
+    b_scaled: Real
+    product: Real
 
 
-def scaled_radii(a: Any, b: Any) -> ScaledRadii:
+def scaled_radii(a: Real, b: Real) -> ScaledRadii:
     """Scale the ellipse by S = sqrt(ab) (11.11): a_S = sqrt(a/b) = 1/b_S."""
     check_semi_axes(a, b)
     s = exact_sqrt(a * b)
@@ -234,21 +240,21 @@ def scaled_radii(a: Any, b: Any) -> ScaledRadii:
     return ScaledRadii(s, a_s, b_s, a_s * b_s)
 
 
-def unit_scale(area_product: Any) -> Any:
+def unit_scale(area_product: Real) -> Real:
     """The geometric-mean scale S = sqrt(ab) of (11.11) from the product ab of the radii (the
     triads' ab = 1 gives the unit scale S = 1, before (11.18)); exact for rational squares."""
     inputs.positive(area_product, "area_product")
     return exact_sqrt(area_product)
 
 
-def major_axis_angle(matrix: Matrix) -> float:
+def major_axis_angle(matrix: Sequence[Sequence[Real]]) -> float:
     """Direction, radians in [0, pi), of the major (longest) axis of r.M.r = 1: the eigenvector
     of the smaller eigenvalue."""
     A, B, C = matrix[0][0], (matrix[0][1] + matrix[1][0]) / 2, matrix[1][1]  # noqa: N806
     return (ellipse_from_form(A, B, C).angle + math.pi / 2) % math.pi
 
 
-def inverse_ellipse_rotation(a: Any, b: Any) -> float:
+def inverse_ellipse_rotation(a: Real, b: Real) -> float:
     """Angle, radians in [0, pi), that turns the S-scaled Q-ellipse (form S^2 Q) onto the
     S-scaled p-ellipse (form Q^-1/S^2): the axis switch after (11.11)."""
     if a == b:
@@ -261,7 +267,7 @@ def inverse_ellipse_rotation(a: Any, b: Any) -> float:
     return (major_axis_angle(scaled_qi) - major_axis_angle(scaled_q)) % math.pi
 
 
-def slope_gain(a: Any, b: Any, power: Any) -> Any:
+def slope_gain(a: Real, b: Real, power: int) -> Real:
     """Factor by which R^power multiplies the slope y/x of a vector (R = diag(1/a, 1/b);
     power 2 is Q, -1 is R^-1): (11.12)-(11.13), (11.16). Exact for rational a, b."""
     operator = matrix_power(slope_operator(a, b), power)
@@ -274,13 +280,13 @@ class AxisEigenvalues:
     """Eigenvalues of R^power on the axis vectors a^ = (1, 0) and b^ = (0, 1), and those
     eigenvalues times a^power and b^power (11.14)-(11.15)."""
 
-    a_axis: Any
-    b_axis: Any
-    a_axis_scaled: Any
-    b_axis_scaled: Any
+    a_axis: Real
+    b_axis: Real
+    a_axis_scaled: Real
+    b_axis_scaled: Real
 
 
-def axis_eigenvalues(a: Any, b: Any, power: Any) -> AxisEigenvalues:
+def axis_eigenvalues(a: Real, b: Real, power: int) -> AxisEigenvalues:
     """R^power maps a^ to a multiple of itself (no slope change, (11.14)): the eigenvalue is
     the ratio of image to vector; R^2 = Q gives 1/a^2 and 1/b^2 (11.15c,d)."""
     operator = matrix_power(slope_operator(a, b), power)

@@ -12,19 +12,19 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.oscillators._common import check_semi_axes, exact_div
 from mechmodel.oscillators.forms import ellipse_form
 from mechmodel.planar import Vector, apply
+from mechmodel.typing import Real
 
 
-def _polar_angle(v: Sequence[Any]) -> float:
+def _polar_angle(v: Sequence[Real]) -> float:
     return math.atan2(v[1], v[0])
 
 
-def triad_angle(a: Any, b: Any, phi0: Any, k: Any) -> float:
+def triad_angle(a: Real, b: Real, phi0: Real, k: int) -> Real:
     """The slope angle phi_k of the triad sequence started at phi_0 (Fig. 11.7): the radius
     r = (a cos phi_k, b sin phi_k) at timer angle phi_k has polar angle phi_k-1 and the
     perpendicular p = Q.r has polar angle phi_k+1 ((11.16)-(11.17)); step |k| times."""
@@ -39,7 +39,7 @@ def triad_angle(a: Any, b: Any, phi0: Any, k: Any) -> float:
     return phi
 
 
-def triad_slope(a: Any, b: Any, phi0: Any, k: Any) -> float:
+def triad_slope(a: Real, b: Real, phi0: Real, k: int) -> float:
     """Slope tan(phi_k) of the k-th line of Fig. 11.7 ((a/b)^k tan phi_0, (11.19))."""
     return math.tan(triad_angle(a, b, phi0, k))
 
@@ -52,13 +52,13 @@ class TriadVectors:
 
     r: Vector
     p: Vector
-    r_x_divisor: Any
-    r_y_divisor: Any
-    p_x_divisor: Any
-    p_y_divisor: Any
+    r_x_divisor: Real
+    r_y_divisor: Real
+    p_x_divisor: Real
+    p_y_divisor: Real
 
 
-def triad_vectors(a: Any, area_product: Any, phi0: Any, k: Any = 0) -> TriadVectors:
+def triad_vectors(a: Real, area_product: Real, phi0: Real, k: int = 0) -> TriadVectors:
     """The vectors of the k-th triad for radii a and b = ``area_product``/a (the book lets
     ab = 1, unit scale S = 1, before (11.18)): r(phi_k-1) and p(phi_k+1) = Q.r(phi_k-1) (11.18)."""
     inputs.positive(area_product, "area_product")
@@ -79,7 +79,7 @@ class TriadDirection:
     slope: float
 
 
-def triad_direction(a: Any, b: Any, start_slope: Any, k: Any) -> TriadDirection:
+def triad_direction(a: Real, b: Real, start_slope: Real, k: int) -> TriadDirection:
     """Direction of the k-th line of the sequence started on the line of slope ``start_slope``
     (phi_0 = atan of it: the book's phi_0 = pi/4 has slope 1), stepped by ``triad_angle``."""
     inputs.real(start_slope, "start_slope")
@@ -96,7 +96,7 @@ class BookTriad:
     p: Vector
 
 
-def book_triad(a: Any, b: Any, area_product: Any, start_slope: Any, j: Any) -> BookTriad:
+def book_triad(a: Real, b: Real, area_product: Real, start_slope: Real, j: int) -> BookTriad:
     """The vectors r(phi_j) and p(phi_j) of (11.18) with the book's matrix at unit scale: the
     book lets ab = 1 and writes Q = diag(1/a^2, 1/b^2) as diag(b/a, a/b) (before (11.18),
     S = sqrt(ab) = 1 in (11.11)), which is Q times ab/``area_product`` for
