@@ -68,13 +68,7 @@ def form_value(matrix: Matrix, vector: Sequence[Symbolic]) -> Symbolic:
     return dot(vector, apply(matrix, vector))
 
 
-def quadratic_form(
-    A: Symbolic,
-    B: Symbolic,
-    C: Symbolic,
-    x: Symbolic,
-    y: Symbolic,  # noqa: N803
-) -> Symbolic:
+def quadratic_form(A: Symbolic, B: Symbolic, C: Symbolic, x: Symbolic, y: Symbolic) -> Symbolic:  # noqa: N803
     """The form (x y).(A B; B C).(x y) of (11.20), by the matrix products (plain operators:
     exact for rationals, an expression for sympy symbols)."""
     return form_value(((A, B), (B, C)), (x, y))
