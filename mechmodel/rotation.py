@@ -23,31 +23,32 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+from typing import cast
 
 from mechmodel import inputs
+from mechmodel.typing import Real
 
 # a sample angular velocity, exact: I = L/w does not depend on it
 _SAMPLE_OMEGA = Fraction(7)
 
 
-def _rational(*values: Any) -> bool:
+def _rational(*values: object) -> bool:
     return all(isinstance(v, int | Fraction) for v in values)
 
 
-def _div(x: Any, y: Any) -> Any:
+def _div(x: Real, y: Real) -> Real:
     return Fraction(x) / Fraction(y) if _rational(x, y) else x / y
 
 
 # -- a point mass on a circle (11.23)-(11.24) ---------------------------------------------------
-def tangential_speed(radius: Any, omega: Any) -> Any:
+def tangential_speed(radius: Real, omega: Real) -> Real:
     """Linear speed V = w r of a point at radius r turning at w (before (11.23))."""
     inputs.real(radius, "radius")
     inputs.real(omega, "omega")
     return omega * radius
 
 
-def rotation_energy(mass: Any, radius: Any, omega: Any) -> Any:
+def rotation_energy(mass: Real, radius: Real, omega: Real) -> Real:
     """Kinetic energy 1/2 m V^2 of a point mass turning at w on a circle of radius r, with
     V = w r (11.23)."""
     inputs.mass(mass)
@@ -55,18 +56,18 @@ def rotation_energy(mass: Any, radius: Any, omega: Any) -> Any:
     return mass * v * v / 2
 
 
-def point_angular_momentum(mass: Any, radius: Any, omega: Any) -> Any:
+def point_angular_momentum(mass: Real, radius: Real, omega: Real) -> Real:
     """Angular momentum Pi r = m V r of a point mass on a circle, V = w r (11.24)."""
     inputs.mass(mass)
     return mass * tangential_speed(radius, omega) * radius
 
 
-def point_inertia(mass: Any, radius: Any) -> Any:
+def point_inertia(mass: Real, radius: Real) -> Real:
     """Rotational inertia I = L/w, the factor that takes the place of m (after (11.24)): m r^2."""
     return _div(point_angular_momentum(mass, radius, _SAMPLE_OMEGA), _SAMPLE_OMEGA)
 
 
-def inertia_energy(inertia: Any, omega: Any) -> Any:
+def inertia_energy(inertia: Real, omega: Real) -> Real:
     """Kinetic energy of rotation at w of a point mass of rotational inertia I (11.23): the
     mass I/point_inertia(1, 1) on the unit circle has that inertia, and its energy is
     1/2 m V^2 with V = w r."""
@@ -76,7 +77,7 @@ def inertia_energy(inertia: Any, omega: Any) -> Any:
 
 
 # -- rods (11.25) -------------------------------------------------------------------------------
-def rod_inertia_about_end(density: Any, length: Any) -> Any:
+def rod_inertia_about_end(density: Real, length: Real) -> Real:
     """I = integral from 0 to l of rho r^2 dr (11.25): the antiderivative of rho r^2 is
     rho r^3/3 (power rule for integrals: r^n -> r^(n+1)/(n+1)). Exact for rational input."""
     inputs.positive(density, "density")
@@ -85,7 +86,7 @@ def rod_inertia_about_end(density: Any, length: Any) -> Any:
     return _div(density * length ** (n + 1), n + 1)
 
 
-def rod_inertia_of_mass(mass: Any, length: Any) -> Any:
+def rod_inertia_of_mass(mass: Real, length: Real) -> Real:
     """Inertia about one end of a uniform rod of mass M and length l: the integral (11.25) with
     the density rho = M/l."""
     inputs.mass(mass)
@@ -93,7 +94,7 @@ def rod_inertia_of_mass(mass: Any, length: Any) -> Any:
     return rod_inertia_about_end(_div(mass, length), length)
 
 
-def free_rod_inertia(mass: Any, half_length: Any) -> Any:
+def free_rod_inertia(mass: Real, half_length: Real) -> Real:
     """Inertia about the centre of a free rod of mass M and half-length l: two rods of mass M/2
     and length l welded end to end, each turning about its end (after (11.25)): M l^2/3."""
     inputs.mass(mass)
@@ -107,15 +108,15 @@ class ImpulseResponse:
     Lambda = Pi h, angular velocity w = Lambda/I, percussion radius p = V/w (the point on the
     other side of the centre at rest), and h p with h p / l^2 (Fig. 11.10)."""
 
-    cm_velocity: Any
-    angular_momentum: Any
-    angular_velocity: Any
-    percussion_radius: Any
-    hit_percussion_product: Any
-    product_coefficient: Any
+    cm_velocity: Real
+    angular_momentum: Real
+    angular_velocity: Real
+    percussion_radius: Real
+    hit_percussion_product: Real
+    product_coefficient: Real
 
 
-def rod_impulse(mass: Any, half_length: Any, impulse: Any, hit_height: Any) -> ImpulseResponse:
+def rod_impulse(mass: Real, half_length: Real, impulse: Real, hit_height: Real) -> ImpulseResponse:
     """Response of a free rod (mass M, half-length l) to an impulse Pi at height h > 0 above its
     centre (Fig. 11.10): translation V = Pi/M and rotation w = Pi h/I cancel at distance
     p = V/w = I/(M h) on the far side."""
@@ -131,25 +132,25 @@ def rod_impulse(mass: Any, half_length: Any, impulse: Any, hit_height: Any) -> I
     return ImpulseResponse(v, spin_momentum, w, p, hp, _div(hp, half_length**2))
 
 
-def percussion_radius(half_length: Any, hit_height: Any) -> Any:
+def percussion_radius(half_length: Real, hit_height: Real) -> Real:
     """Percussion radius p of a free rod of half-length l struck at height h (any M, Pi)."""
     return rod_impulse(1, half_length, 1, hit_height).percussion_radius
 
 
-def percussion_fraction(half_length: Any, hit_divisor: Any) -> Any:
+def percussion_fraction(half_length: Real, hit_divisor: Real) -> Real:
     """p/l for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/2 gives p = 2l/3)."""
     inputs.positive(hit_divisor, "hit_divisor")
     return _div(percussion_radius(half_length, _div(half_length, hit_divisor)), half_length)
 
 
-def percussion_radius_for_divisor(half_length: Any, hit_divisor: Any) -> Any:
+def percussion_radius_for_divisor(half_length: Real, hit_divisor: Real) -> Real:
     """Percussion radius p for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/3
     gives p = l)."""
     inputs.positive(hit_divisor, "hit_divisor")
     return percussion_radius(half_length, _div(half_length, hit_divisor))
 
 
-def radius_of_gyration(rod_length: Any) -> float:
+def radius_of_gyration(rod_length: Real) -> float:
     """Radius of gyration sqrt(I/M) about the centre of a free rod of total length L = 2l:
     l/sqrt(3) (text after Fig. 11.10)."""
     inputs.positive(rod_length, "rod_length")
@@ -157,7 +158,7 @@ def radius_of_gyration(rod_length: Any) -> float:
     return math.sqrt(free_rod_inertia(1, half))
 
 
-def sweet_spot(half_length: Any) -> float:
+def sweet_spot(half_length: Real) -> float:
     """The hit height h at which the percussion radius p equals h (text after Fig. 11.10):
     h p = l^2/3 with p = h, found by bisection on p(h) - h (p falls and h rises)."""
     inputs.positive(half_length, "half_length")
@@ -174,7 +175,7 @@ def sweet_spot(half_length: Any) -> float:
 
 # -- cycloids of a free rod (Fig. 11.9) ---------------------------------------------------------
 def rod_point_position(
-    mass: Any, half_length: Any, impulse: Any, hit_height: Any, offset: Any, t: Any
+    mass: Real, half_length: Real, impulse: Real, hit_height: Real, offset: Real, t: Real
 ) -> tuple[float, float]:
     """Position at time t of the point at signed distance ``offset`` from the centre along a
     rod struck at t = 0 while it stood upright (Fig. 11.9): the centre moves at V along x, the
@@ -187,12 +188,12 @@ def rod_point_position(
     return (v * t + offset * math.sin(w * t), offset * math.cos(w * t))
 
 
-def cycloid_kind(offset: Any, percussion_radius: Any) -> str:
+def cycloid_kind(offset: Real, percussion_radius: Real) -> str:
     """The cycloid a rod point traces on the tire of radius p (Fig. 11.9): the centre a line,
     |s| < p prolate, |s| = p normal (with cusps), |s| > p curlate (looped)."""
     inputs.real(offset, "offset")
     inputs.positive(percussion_radius, "percussion_radius")
-    s = abs(offset)
+    s = cast(Real, abs(offset))  # mypy joins abs over a union to object
     if s == 0:
         return "line"
     if s < percussion_radius:

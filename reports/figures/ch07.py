@@ -27,8 +27,9 @@ def _squeezes(positions: tuple[tuple[float, ...], ...]) -> list[float]:
     ]
 
 
-def _soft_pair(ax: Axes, power: float, title: str) -> tuple[float, float]:
-    """Draw the zero-gap 7:1 pair's heights against time; return the final velocities."""
+def _soft_pair(ax: Axes, power: float, title: str) -> tuple[float, ...]:
+    """Draw the zero-gap 7:1 pair's heights against time; return the final velocities (one
+    per ball)."""
     run = zero_gap_tower(list(PAIR), power)
     finals = tuple(e.value for e in run.velocities)
     # stack the balls (sizes taken out by the model) with a size D larger than any squeeze,
