@@ -129,7 +129,7 @@ def _mutate(kind: str, node: ast.AST) -> ast.AST:
 def enumerate_mutants(root: Path, package: str = "mechmodel") -> list[Mutant]:
     """Every mutation site of ``package``: all its modules for mechmodel, the judge's for
     reference."""
-    paths = sorted((root / package).glob("*.py"))
+    paths = sorted((root / package).rglob("*.py"))
     if package == "reference":
         paths = [root / "reference" / f"{name}.py" for name in JUDGE]
     out = []

@@ -92,7 +92,7 @@ def test_mechmodel_echoes_no_printed_value(catalog: Catalog) -> None:
     printed = printed_values(catalog)
     found = {
         path.name: hits
-        for path in sorted((ROOT / "mechmodel").glob("*.py"))
+        for path in sorted((ROOT / "mechmodel").rglob("*.py"))
         if (hits := echoes(path.read_text(encoding="utf-8"), printed))
     }
     assert not found
@@ -104,7 +104,7 @@ def test_mechmodel_holds_no_unit_factor() -> None:
     factors = {f for f in factors if not math.log10(f).is_integer()}
     found = [
         (path.name, line, text)
-        for path in sorted((ROOT / "mechmodel").glob("*.py"))
+        for path in sorted((ROOT / "mechmodel").rglob("*.py"))
         for line, value, text in literals(path.read_text(encoding="utf-8"))
         if value in factors
     ]
