@@ -393,6 +393,8 @@ class Laurent:
 
 # -- polynomials as coefficient lists -----------------------------------------------------------
 @overload
+def polynomial_derivative(coefficients: Sequence[float]) -> list[float]: ...
+@overload
 def polynomial_derivative(coefficients: Sequence[Real]) -> list[Real]: ...
 @overload
 def polynomial_derivative(coefficients: Sequence[Symbolic]) -> Sequence[Symbolic]: ...
@@ -402,6 +404,8 @@ def polynomial_derivative(coefficients: Sequence[Symbolic]) -> Sequence[Symbolic
     return [k * c for k, c in enumerate(coefficients)][1:]
 
 
+@overload
+def polynomial_integral(coefficients: Sequence[float], x: float) -> float: ...
 @overload
 def polynomial_integral(coefficients: Sequence[Real], x: Real) -> Real: ...
 @overload

@@ -222,45 +222,45 @@ class UnitCircleSegments:
     angle: Real
     radius: Real
 
-    def _cos(self) -> Real:
+    def _cos(self) -> float:
         return _lib(self.angle).cos(self.angle)
 
-    def _sin(self) -> Real:
+    def _sin(self) -> float:
         return _lib(self.angle).sin(self.angle)
 
     @staticmethod
-    def _over(numerator: Real, denominator: Real, name: str) -> Real:
+    def _over(numerator: Real, denominator: float, name: str) -> float:
         if denominator == 0:
             raise ValueError(f"the {name} segment is infinite at this angle")
         return numerator / denominator
 
     @property
-    def base(self) -> Real:
+    def base(self) -> float:
         """r cos σ: the horizontal leg (Fig. 1.4b: 0.5403 for σ = 1)."""
         return self.radius * self._cos()
 
     @property
-    def altitude(self) -> Real:
+    def altitude(self) -> float:
         """r sin σ: the vertical leg (Fig. 1.4a: 0.8415 for σ = 1)."""
         return self.radius * self._sin()
 
     @property
-    def tangent(self) -> Real:
+    def tangent(self) -> float:
         """r tan σ: the tangent segment from the circle to the x-axis."""
         return self._over(self.radius * self._sin(), self._cos(), "tangent")
 
     @property
-    def cotangent(self) -> Real:
+    def cotangent(self) -> float:
         """r cot σ: the tangent segment from the circle to the y-axis."""
         return self._over(self.radius * self._cos(), self._sin(), "cotangent")
 
     @property
-    def secant(self) -> Real:
+    def secant(self) -> float:
         """r sec σ: centre to the secant point on the x-axis."""
         return self._over(self.radius, self._cos(), "secant")
 
     @property
-    def cosecant(self) -> Real:
+    def cosecant(self) -> float:
         """r csc σ: centre to the cosecant point on the y-axis."""
         return self._over(self.radius, self._sin(), "cosecant")
 
@@ -314,8 +314,8 @@ class WhirlingRectangles:
     """
 
     angle: Real
-    lengths: tuple[Real, ...]
-    scale_factor: Real
+    lengths: tuple[float, ...]
+    scale_factor: float
     rotation: Real
     first_angle: Real
 

@@ -46,6 +46,8 @@ def from_columns(first: Sequence[T], second: Sequence[T]) -> Matrix[T]:
 # Products are written with plain operators: real entries give a real number, sympy symbols an
 # expression (``Symbolic``).
 @overload
+def dot(u: Sequence[float], v: Sequence[float]) -> float: ...
+@overload
 def dot(u: Sequence[Real], v: Sequence[Real]) -> Real: ...
 @overload
 def dot(u: Sequence[Symbolic], v: Sequence[Symbolic]) -> Symbolic: ...
@@ -54,6 +56,8 @@ def dot(u: Sequence[Symbolic], v: Sequence[Symbolic]) -> Symbolic:
     return u[0] * v[0] + u[1] * v[1]
 
 
+@overload
+def cross(u: Sequence[float], v: Sequence[float]) -> float: ...
 @overload
 def cross(u: Sequence[Real], v: Sequence[Real]) -> Real: ...
 @overload
@@ -81,6 +85,8 @@ def hypotenuse(altitude: Real, base: Real) -> Real:
 
 # -- matrices ---------------------------------------------------------------------------------
 @overload
+def apply(a: Sequence[Sequence[float]], v: Sequence[float]) -> Vector[float]: ...
+@overload
 def apply(a: Sequence[Sequence[Real]], v: Sequence[Real]) -> Vector[Real]: ...
 @overload
 def apply(a: Sequence[Sequence[Symbolic]], v: Sequence[Symbolic]) -> Vector[Symbolic]: ...
@@ -90,6 +96,8 @@ def apply(a: Sequence[Sequence[Symbolic]], v: Sequence[Symbolic]) -> Vector[Symb
     return (m[0][0] * v[0] + m[0][1] * v[1], m[1][0] * v[0] + m[1][1] * v[1])
 
 
+@overload
+def matrix_product(a: Sequence[Sequence[float]], b: Sequence[Sequence[float]]) -> Matrix[float]: ...
 @overload
 def matrix_product(a: Sequence[Sequence[Real]], b: Sequence[Sequence[Real]]) -> Matrix[Real]: ...
 @overload
@@ -107,6 +115,8 @@ def matrix_product(
     )
 
 
+@overload
+def determinant(a: Sequence[Sequence[float]]) -> float: ...
 @overload
 def determinant(a: Sequence[Sequence[Real]]) -> Real: ...
 @overload
