@@ -24,9 +24,10 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+from typing import TypeAlias, overload
 
 from mechmodel import inputs
+from mechmodel.typing import Real, Scalar, Symbolic
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -37,7 +38,7 @@ class Gaussian:
     im: Fraction | int = 0
 
     @staticmethod
-    def of(value: Any) -> Gaussian:
+    def of(value: Gaussian | Scalar) -> Gaussian:
         """``value`` (an int, Fraction, Gaussian or complex) as exact. Integer parts stay
         ``int`` (faster; they mix exactly with Fraction), floats become their exact Fraction."""
         if isinstance(value, Gaussian):
@@ -48,8 +49,8 @@ class Gaussian:
             return Gaussian(Fraction(value), 0)
         return Gaussian(value, 0)
 
-    def __add__(self, other: Any) -> Gaussian:
-        if not isinstance(other, _NUMBERS):
+    def __add__(self, other: Gaussian | Scalar) -> Gaussian:
+        if not _is_number(other):
             return NotImplemented  # a polynomial adds a Gaussian itself
         o = Gaussian.of(other)
         return Gaussian(self.re + o.re, self.im + o.im)
@@ -59,24 +60,24 @@ class Gaussian:
     def __neg__(self) -> Gaussian:
         return Gaussian(-self.re, -self.im)
 
-    def __sub__(self, other: Any) -> Gaussian:
-        if not isinstance(other, _NUMBERS):
+    def __sub__(self, other: Gaussian | Scalar) -> Gaussian:
+        if not _is_number(other):
             return NotImplemented
         return self + (-Gaussian.of(other))
 
-    def __rsub__(self, other: Any) -> Gaussian:
+    def __rsub__(self, other: Gaussian | Scalar) -> Gaussian:
         return Gaussian.of(other) + (-self)
 
-    def __mul__(self, other: Any) -> Gaussian:
-        if not isinstance(other, _NUMBERS):
+    def __mul__(self, other: Gaussian | Scalar) -> Gaussian:
+        if not _is_number(other):
             return NotImplemented
         o = Gaussian.of(other)
         return Gaussian(self.re * o.re - self.im * o.im, self.re * o.im + self.im * o.re)
 
     __rmul__ = __mul__
 
-    def __truediv__(self, other: Any) -> Gaussian:
-        if not isinstance(other, _NUMBERS):
+    def __truediv__(self, other: Gaussian | Scalar) -> Gaussian:
+        if not _is_number(other):
             return NotImplemented
         o = Gaussian.of(other)
         norm = Fraction(o.re * o.re + o.im * o.im)
@@ -84,7 +85,7 @@ class Gaussian:
             raise ZeroDivisionError("division by the Gaussian zero")
         return self * Gaussian(o.re / norm, -o.im / norm)
 
-    def __rtruediv__(self, other: Any) -> Gaussian:
+    def __rtruediv__(self, other: Gaussian | Scalar) -> Gaussian:
         return Gaussian.of(other) / self
 
     def __pow__(self, n: int) -> Gaussian:
@@ -123,7 +124,16 @@ I_UNIT = Gaussian(0, 1)
 _NUMBERS = (Gaussian, int, Fraction, float, complex)
 
 
-def exact(value: Any) -> Fraction | Gaussian:
+def _is_number(value: object) -> bool:
+    """Whether a Gaussian's operator can take ``value``; else it returns NotImplemented, so
+    that Python asks the other operand (a ``Laurent`` adds a Gaussian itself)."""
+    return isinstance(value, _NUMBERS)
+
+
+Coefficient: TypeAlias = Gaussian | Scalar  # what a polynomial's coefficient is made from
+
+
+def exact(value: Coefficient) -> Fraction | Gaussian:
     """``value`` as an exact coefficient: a ``Fraction`` when it is real, else a ``Gaussian``
     with a non-zero imaginary part. Floats and complex numbers convert exactly."""
     if isinstance(value, Gaussian | complex):
@@ -132,7 +142,7 @@ def exact(value: Any) -> Fraction | Gaussian:
     return Fraction(value)
 
 
-def _is_exact(value: Any) -> bool:
+def _is_exact(value: object) -> bool:
     return isinstance(value, int | Fraction | Gaussian) and not isinstance(value, bool)
 
 
@@ -154,7 +164,7 @@ class Laurent:
 
     __slots__ = ("terms",)
 
-    def __init__(self, terms: Mapping[Monomial, Any] | None = None) -> None:
+    def __init__(self, terms: Mapping[Monomial, Coefficient] | None = None) -> None:
         self.terms: dict[Monomial, Fraction | Gaussian] = {}
         for key, value in (terms or {}).items():
             c = exact(value)
@@ -163,7 +173,7 @@ class Laurent:
 
     # construction ---------------------------------------------------------------------------
     @staticmethod
-    def constant(value: Any) -> Laurent:
+    def constant(value: Coefficient) -> Laurent:
         return Laurent({(): value})
 
     @staticmethod
@@ -172,12 +182,12 @@ class Laurent:
         return Laurent({monomial({name: power}): 1})
 
     @staticmethod
-    def term(coefficient: Any, **powers: int) -> Laurent:
+    def term(coefficient: Coefficient, **powers: int) -> Laurent:
         """The single term coefficient * x^i y^j ... (``Laurent.term(3, x=2, y=-1)``)."""
         return Laurent({monomial(powers): coefficient})
 
     @staticmethod
-    def from_powers(names: Sequence[str], terms: Mapping[tuple[int, ...], Any]) -> Laurent:
+    def from_powers(names: Sequence[str], terms: Mapping[tuple[int, ...], Coefficient]) -> Laurent:
         """The polynomial whose coefficients ``terms`` are keyed by the exponents of the
         variables ``names``, in that order (``{(2, 1): c}`` is c x^2 y for names x, y)."""
         return Laurent(
@@ -185,11 +195,11 @@ class Laurent:
         )
 
     @staticmethod
-    def of(value: Any) -> Laurent:
+    def of(value: Laurent | Coefficient) -> Laurent:
         return value if isinstance(value, Laurent) else Laurent.constant(value)
 
     # arithmetic -----------------------------------------------------------------------------
-    def __add__(self, other: Any) -> Laurent:
+    def __add__(self, other: Laurent | Coefficient) -> Laurent:
         out = dict(self.terms)
         for key, value in Laurent.of(other).terms.items():
             out[key] = out.get(key, Fraction(0)) + value
@@ -200,15 +210,15 @@ class Laurent:
     def __neg__(self) -> Laurent:
         return Laurent({k: -v for k, v in self.terms.items()})
 
-    def __sub__(self, other: Any) -> Laurent:
+    def __sub__(self, other: Laurent | Coefficient) -> Laurent:
         return self + (-Laurent.of(other))
 
-    def __rsub__(self, other: Any) -> Laurent:
+    def __rsub__(self, other: Laurent | Coefficient) -> Laurent:
         return Laurent.of(other) - self
 
-    def __mul__(self, other: Any) -> Laurent:
+    def __mul__(self, other: Laurent | Coefficient) -> Laurent:
         o = Laurent.of(other)
-        out: dict[Monomial, Any] = {}
+        out: dict[Monomial, Fraction | Gaussian] = {}
         for a, u in self.terms.items():
             for b, v in o.terms.items():
                 powers = dict(a)
@@ -227,7 +237,7 @@ class Laurent:
         ((key, c),) = self.terms.items()
         return Laurent({tuple((name, -e) for name, e in key): 1 / c})
 
-    def __truediv__(self, other: Any) -> Laurent:
+    def __truediv__(self, other: Laurent | Coefficient) -> Laurent:
         return self * Laurent.of(other).monomial_inverse()
 
     def __pow__(self, n: int) -> Laurent:
@@ -313,7 +323,7 @@ class Laurent:
     # calculus and evaluation ----------------------------------------------------------------
     def diff(self, name: str) -> Laurent:
         """Partial derivative with respect to the variable ``name`` (the power rule)."""
-        out: dict[Monomial, Any] = {}
+        out: dict[Monomial, Fraction | Gaussian] = {}
         for key, c in self.terms.items():
             powers = dict(key)
             e = powers.get(name, 0)
@@ -326,7 +336,7 @@ class Laurent:
 
     def integrate(self, name: str) -> Laurent:
         """An antiderivative in ``name`` with zero constant (power rule backwards)."""
-        out: dict[Monomial, Any] = {}
+        out: dict[Monomial, Fraction | Gaussian] = {}
         for key, c in self.terms.items():
             powers = dict(key)
             e = powers.get(name, 0)
@@ -337,7 +347,7 @@ class Laurent:
             out[k] = out.get(k, Fraction(0)) + c / (e + 1)
         return Laurent(out)
 
-    def substitute(self, name: str, value: Any) -> Laurent:
+    def substitute(self, name: str, value: Laurent | Coefficient) -> Laurent:
         """Replace the variable ``name`` by ``value`` (a number or Laurent polynomial; a
         negative power needs a single-term ``value``)."""
         value = Laurent.of(value)
@@ -348,13 +358,13 @@ class Laurent:
             out = out + Laurent({monomial(powers): c}) * value**e
         return out
 
-    def evaluate(self, values: Mapping[str, Any]) -> Any:
+    def evaluate(self, values: Mapping[str, Coefficient]) -> Coefficient:
         """The number this polynomial takes at ``values``: exact where every value is exact
         (``int``, ``Fraction`` or ``Gaussian``), else a float (a complex number where a
         coefficient or a value is complex), with plain operators."""
         terms = []
         for key, c in self.terms.items():
-            term: Any = c
+            term: Coefficient = c
             if not all(_is_exact(values[n]) for n, _ in key):
                 term = complex(c) if isinstance(c, Gaussian) else float(c)
             for name, e in key:
@@ -362,7 +372,7 @@ class Laurent:
             terms.append(term)
         if not all(_is_exact(t) for t in terms):  # an exact complex term joins inexact ones
             terms = [complex(t) if isinstance(t, Gaussian) else t for t in terms]
-        total: Any = 0
+        total: Coefficient = 0
         for term in terms:
             total = total + term
         return total
@@ -382,13 +392,25 @@ class Laurent:
 
 
 # -- polynomials as coefficient lists -----------------------------------------------------------
-def polynomial_derivative(coefficients: Sequence[Any]) -> list[Any]:
+@overload
+def polynomial_derivative(coefficients: Sequence[float]) -> list[float]: ...
+@overload
+def polynomial_derivative(coefficients: Sequence[Real]) -> list[Real]: ...
+@overload
+def polynomial_derivative(coefficients: Sequence[Symbolic]) -> Sequence[Symbolic]: ...
+def polynomial_derivative(coefficients: Sequence[Symbolic]) -> Sequence[Symbolic]:
     """Coefficients of dp/dx for p(x) = sum c_k x^k (index k = power), by the power rule
     (10.8b): k c_k moves to index k - 1. Plain operators: symbols give expressions."""
     return [k * c for k, c in enumerate(coefficients)][1:]
 
 
-def polynomial_integral(coefficients: Sequence[Any], x: Any) -> Any:
+@overload
+def polynomial_integral(coefficients: Sequence[float], x: float) -> float: ...
+@overload
+def polynomial_integral(coefficients: Sequence[Real], x: Real) -> Real: ...
+@overload
+def polynomial_integral(coefficients: Sequence[Symbolic], x: Symbolic) -> Symbolic: ...
+def polynomial_integral(coefficients: Sequence[Symbolic], x: Symbolic) -> Symbolic:
     """The integral from 0 to ``x`` of p(x) = sum c_k x^k: sum c_k x^(k+1) / (k+1).
 
     Exact with Fraction coefficients and ``x``.

@@ -20,16 +20,16 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
+from mechmodel.typing import Real
 
 
-def _is_mp(x: Any) -> bool:
+def _is_mp(x: object) -> bool:
     return type(x).__module__.startswith("mpmath")
 
 
-def _sqrt(x: Any) -> Any:
+def _sqrt(x: Real) -> Real:
     """Square root of x >= 0: exact for a Fraction or int that is a rational square."""
     if x < 0:
         raise ValueError(f"square root of a negative number {x!r}")
@@ -46,7 +46,7 @@ def _sqrt(x: Any) -> Any:
     return math.sqrt(x)
 
 
-def kinetic_energy(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
+def kinetic_energy(masses: Sequence[Real], velocities: Sequence[Real]) -> Real:
     """Total kinetic energy KE = sum 1/2 m v^2 ((3.5b), the Lagrangian of free bodies (12.3));
     finite masses only.
 
@@ -55,7 +55,7 @@ def kinetic_energy(masses: Sequence[Any], velocities: Sequence[Any]) -> Any:
     return sum(m * v * v for m, v in inputs.bodies(masses, velocities)) / 2
 
 
-def velocity_radius(mass: Any, energy: Any) -> Any:
+def velocity_radius(mass: Real, energy: Real) -> Real:
     """Radius sqrt(2E/m) of the energy ellipse KE = E along the velocity axis of the body of
     mass m: where that body alone carries the energy, 1/2 m v^2 = E ((3.7b), Fig. 12.2)."""
     inputs.mass(mass, "mass")
@@ -65,7 +65,7 @@ def velocity_radius(mass: Any, energy: Any) -> Any:
     return _sqrt(2 * energy / mass)
 
 
-def momentum_radius(mass: Any, energy: Any) -> Any:
+def momentum_radius(mass: Real, energy: Real) -> Real:
     """Radius sqrt(2 E m) of the ellipse H(p) = sum p^2/(2m) = E along the momentum axis of the
     body of mass m (Fig. 12.2): m times its velocity radius."""
     inputs.mass(mass, "mass")
@@ -75,7 +75,7 @@ def momentum_radius(mass: Any, energy: Any) -> Any:
     return _sqrt(2 * energy * mass)
 
 
-def ellipse_radii(m1: Any, m2: Any, energy: Any) -> tuple[Any, Any]:
+def ellipse_radii(m1: Real, m2: Real, energy: Real) -> tuple[Real, Real]:
     """Radii (a, b) = (sqrt(2 KE/m1), sqrt(2 KE/m2)) of the KE ellipse (3.7b).
 
     ``a`` lies along the V1 axis, ``b`` along V2: 1/2 m1 a^2 = 1/2 m2 b^2 = KE.
@@ -97,46 +97,46 @@ class EnergyEllipse:
     momentum line cuts the ellipse (Fig. 3.1, the duality of line 2419).
     """
 
-    masses: tuple[Any, Any]
-    point: tuple[Any, Any]
+    masses: tuple[Real, Real]
+    point: tuple[Real, Real]
 
     @property
-    def energy(self) -> Any:
+    def energy(self) -> Real:
         """Kinetic energy KE of the point (3.5b)."""
         return kinetic_energy(self.masses, self.point)
 
     @property
-    def twice_energy(self) -> Any:
+    def twice_energy(self) -> Real:
         """2 KE = m1 v1^2 + m2 v2^2, the right side of (3.7b)."""
         return 2 * self.energy
 
     @property
-    def radii(self) -> tuple[Any, Any]:
+    def radii(self) -> tuple[Real, Real]:
         """Radii (a, b) along V1 and V2 (3.7b)."""
         return ellipse_radii(self.masses[0], self.masses[1], self.energy)
 
     @property
-    def radius_v1(self) -> Any:
+    def radius_v1(self) -> Real:
         """The semi-axis a = sqrt(2 KE/m1) along V1."""
         return self.radii[0]
 
     @property
-    def radius_v2(self) -> Any:
+    def radius_v2(self) -> Real:
         """The semi-axis b = sqrt(2 KE/m2) along V2."""
         return self.radii[1]
 
     @property
-    def minor_radius(self) -> Any:
+    def minor_radius(self) -> Real:
         """The shorter semi-axis (along the heavier body's velocity)."""
         return min(self.radii)
 
     @property
-    def major_radius(self) -> Any:
+    def major_radius(self) -> Real:
         """The longer semi-axis (along the lighter body's velocity)."""
         return max(self.radii)
 
     @property
-    def tangent_slope(self) -> Any:
+    def tangent_slope(self) -> Real:
         """Slope dV2/dV1 = -m1 v1 / (m2 v2) of the ellipse at the point; ValueError where the
         tangent is vertical (v2 = 0)."""
         (m1, m2), (v1, v2) = self.masses, self.point
@@ -145,13 +145,13 @@ class EnergyEllipse:
         return -(m1 * v1) / (m2 * v2)
 
 
-def energy_ellipse(m1: Any, m2: Any, v1: Any, v2: Any) -> EnergyEllipse:
+def energy_ellipse(m1: Real, m2: Real, v1: Real, v2: Real) -> EnergyEllipse:
     """The KE ellipse of bodies m1, m2 through the velocity point (v1, v2) (Fig. 3.1, (3.7))."""
     inputs.bodies((m1, m2), (v1, v2))
     return EnergyEllipse((m1, m2), (v1, v2))
 
 
-def ellipse_point(a: Any, b: Any, angle: Any) -> tuple[Any, Any]:
+def ellipse_point(a: Real, b: Real, angle: Real) -> tuple[float, float]:
     """Point (a cos s, b sin s) of the ellipse of radii a, b >= 0 at the clock-hand angle s
     (Fig. 11.1; Exercise Figs. 3.6-3.7); radii 0 give the point ellipse of a body at rest."""
     for radius, name in ((a, "a"), (b, "b")):
@@ -166,7 +166,7 @@ def ellipse_point(a: Any, b: Any, angle: Any) -> tuple[Any, Any]:
     return (a * math.cos(angle), b * math.sin(angle))
 
 
-def ellipse_outline(a: Any, b: Any, points: int = 361) -> tuple[list[float], list[float]]:
+def ellipse_outline(a: Real, b: Real, points: int = 361) -> tuple[list[float], list[float]]:
     """The closed outline of the ellipse of radii a, b: ``points`` points (a cos s, b sin s)
     at equal steps of s from 0 to 2 pi, as x and y lists of floats for drawing."""
     n = inputs.count(points, "points", minimum=2)

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
+from mechmodel.typing import Real
 
 
-def exact_sqrt(x: Any) -> Any:
+def exact_sqrt(x: Real) -> Real:
     """The square root of x >= 0: an ``int`` for an int perfect square, a ``Fraction`` for a
     Fraction whose numerator and denominator are perfect squares, else a float."""
     inputs.real(x, "x")

@@ -18,19 +18,20 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Any
+from typing import SupportsFloat
 
 from mechmodel import inputs
+from mechmodel.typing import Real
 
 _COMPLEX_STEP = 1e-30  # far below rounding: the complex-step slope is exact to rounding
 _LOG_STEP = 1e-4  # step in ln x of the central-difference log-slope
 
 
-def _is_mp(x: Any) -> bool:
+def _is_mp(x: object) -> bool:
     return type(x).__module__.startswith("mpmath")
 
 
-def complex_step_derivative(f: Callable[[Any], Any], x: Any) -> float:
+def complex_step_derivative(f: Callable[[complex], complex], x: Real) -> float:
     """df/dx at ``x`` by the complex step, Im f(x + i h) / h.
 
     ``f`` must be analytic near the real axis and written with plain operators (or ``cmath``),
@@ -39,7 +40,7 @@ def complex_step_derivative(f: Callable[[Any], Any], x: Any) -> float:
     return f(float(x) + 1j * _COMPLEX_STEP).imag / _COMPLEX_STEP
 
 
-def log_slope(f: Callable[[float], Any], x: Any) -> float:
+def log_slope(f: Callable[[float], SupportsFloat], x: Real) -> float:
     """Local power d ln|f| / d ln x at ``x > 0``: exactly n (to rounding) for f = c x^n.
 
     A central difference in ln x, so ``f`` may itself be computed numerically (a slope).
@@ -49,7 +50,7 @@ def log_slope(f: Callable[[float], Any], x: Any) -> float:
     return (math.log(up) - math.log(down)) / (2 * _LOG_STEP)
 
 
-def line_angle(slope: Any) -> Any:
+def line_angle(slope: Real) -> float:
     """Angle (radians) of a line of slope ``slope`` = dy/dx from the horizontal axis,
     atan(slope), in (-pi/2, pi/2): the slope angle sigma of Fig. 1.2 (line 934: slope 1/1 is the
     45 degree diagonal), the equal-velocity line V2 = V1 of Fig. 2.1, the line y = x of
@@ -62,7 +63,7 @@ def line_angle(slope: Any) -> Any:
     return math.atan(slope)
 
 
-def line_slope(angle: Any) -> Any:
+def line_slope(angle: Real) -> float:
     """Slope tan(angle) of a line at ``angle`` radians from the horizontal axis: the inverse of
     ``line_angle``."""
     inputs.real(angle, "angle")
@@ -73,7 +74,7 @@ def line_slope(angle: Any) -> Any:
     return math.tan(angle)
 
 
-def clock_angle(hours: Any, hours_per_turn: Any) -> Any:
+def clock_angle(hours: Real, hours_per_turn: int) -> float:
     """Angle (radians) swept by ``hours`` on a clock face of ``hours_per_turn`` equal hours:
     2 pi h / N (exercise 3 of chapter 1, lines 1859-1861: 3 hours of a 12-point clock is 90
     degrees; the phase of the 16-hour phasor clock of Fig. 9.10)."""

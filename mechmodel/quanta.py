@@ -19,12 +19,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
 
 from mechmodel import inputs
+from mechmodel.typing import Real
 
 
-def photon_energy(frequency: Any, planck_constant: Any) -> Any:
+def photon_energy(frequency: Real, planck_constant: Real) -> Real:
     """Energy of one photon of light of ``frequency`` (Hz): E = h nu, in J (line 557).
 
     Linear in the frequency; exact for Fraction inputs.
@@ -34,7 +34,7 @@ def photon_energy(frequency: Any, planck_constant: Any) -> Any:
     return planck_constant * frequency
 
 
-def speed_fraction(energy: Any, rest_energy: Any) -> float:
+def speed_fraction(energy: Real, rest_energy: Real) -> float:
     """Speed as a fraction of c, beta = v/c, of a particle of total ``energy`` and
     ``rest_energy`` (= m c^2, same unit): E = gamma m c^2 with gamma = 1/sqrt(1 - beta^2), so
     beta = sqrt(1 - (m c^2 / E)^2) (line 902).
@@ -51,7 +51,7 @@ def speed_fraction(energy: Any, rest_energy: Any) -> float:
     return math.sqrt((1 - ratio) * (1 + ratio))
 
 
-def one_ball_state_count(mass: Any, energy: Any, length: Any, planck_constant: Any) -> float:
+def one_ball_state_count(mass: Real, energy: Real, length: Real, planck_constant: Real) -> float:
     """Number of quantum states of one ball of ``mass`` (kg) moving on a line of ``length``
     (m) with kinetic energy up to ``energy`` (J): the phase-space area 2 L sqrt(2 m E) of the
     classical motion divided by h (one state per cell of area h)."""
@@ -75,12 +75,12 @@ class WavefunctionSize:
 
 
 def two_ball_wavefunction_size(
-    mass1: Any,
-    mass2: Any,
-    energy: Any,
-    length: Any,
-    planck_constant: Any,
-    bytes_per_amplitude: Any,
+    mass1: Real,
+    mass2: Real,
+    energy: Real,
+    length: Real,
+    planck_constant: Real,
+    bytes_per_amplitude: int,
 ) -> WavefunctionSize:
     """Size of the quantum description of two balls of ``mass1`` and ``mass2`` (kg) colliding on
     a line of ``length`` (m) with total kinetic energy up to ``energy`` (J) (line 65).

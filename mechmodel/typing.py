@@ -10,6 +10,8 @@ say which of these a function accepts:
 - ``Scalar``: a ``Real`` or a ``complex`` number.
 - ``Symbolic``: a ``Real`` or a sympy expression: a function written with plain operators,
   which a formula claim calls with sympy symbols and compares with the book's formula.
+  sympy ships no type information, so the expression is the Protocol ``Expression``: what
+  a sympy expression offers such a function, the operators + - * / ** and unary minus.
 - ``Vector`` and ``Matrix``: a list of numbers (velocities of n balls, a state) and a list of
   rows (a collision or bang matrix); the plane's fixed pairs are ``planar.Vector`` and
   ``planar.Matrix``.
@@ -25,14 +27,12 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, TypeAlias, TypeVar
-
-if TYPE_CHECKING:
-    import sympy
+from typing import Any, Protocol, TypeAlias, TypeVar
 
 __all__ = [
     "Estimate",
     "Exact",
+    "Expression",
     "Matrix",
     "Real",
     "Scalar",
@@ -45,11 +45,31 @@ __all__ = [
 Exact: TypeAlias = int | Fraction
 Real: TypeAlias = float | int | Fraction
 Scalar: TypeAlias = Real | complex
-Symbolic: TypeAlias = "Real | sympy.Expr"
+
+
+class Expression(Protocol):
+    """A sympy expression as a plain-operator function sees it: each operator with a number
+    or another expression gives an expression (sympy ships no type information)."""
+
+    def __add__(self, other: Real | Expression, /) -> Expression: ...
+    def __radd__(self, other: Real | Expression, /) -> Expression: ...
+    def __sub__(self, other: Real | Expression, /) -> Expression: ...
+    def __rsub__(self, other: Real | Expression, /) -> Expression: ...
+    def __mul__(self, other: Real | Expression, /) -> Expression: ...
+    def __rmul__(self, other: Real | Expression, /) -> Expression: ...
+    def __truediv__(self, other: Real | Expression, /) -> Expression: ...
+    def __rtruediv__(self, other: Real | Expression, /) -> Expression: ...
+    def __pow__(self, other: Real | Expression, /) -> Expression: ...
+    def __rpow__(self, other: Real | Expression, /) -> Expression: ...
+    def __neg__(self) -> Expression: ...
+    def __pos__(self) -> Expression: ...
+
+
+Symbolic: TypeAlias = Real | Expression
 Vector: TypeAlias = Sequence[Real]
 Matrix: TypeAlias = Sequence[Sequence[Real]]
 
-F = TypeVar("F", bound=Callable[..., Any])
+F = TypeVar("F", bound=Callable[..., Any])  # any function: the decorator returns it unchanged
 
 _MONOTONIC = "monotonic"  # the attribute @not_monotonic sets; read only by is_monotonic
 
@@ -73,6 +93,6 @@ def not_monotonic(func: F) -> F:
     return func
 
 
-def is_monotonic(func: Callable[..., Any]) -> bool:
+def is_monotonic(func: Callable[..., object]) -> bool:
     """False for a function marked ``@not_monotonic``, else True."""
     return getattr(func, _MONOTONIC, True) is not False

@@ -24,30 +24,30 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 import mpmath
 
 from mechmodel import inputs
 from mechmodel.exact import exact_sqrt
 from mechmodel.planar import cross
+from mechmodel.typing import Real
 
 DIMENSIONS = 3
 
 
-def _vector(v: Sequence[Any], name: str, size: int | None = None) -> list[Any]:
+def _vector(v: Sequence[Real], name: str, size: int | None = None) -> list[Real]:
     out = [inputs.real(c, f"{name} component") for c in v]
     if size is not None and len(out) != size:
         raise ValueError(f"{name} must have {size} components, got {len(out)}")
     return out
 
 
-def kronecker(i: Any, j: Any) -> int:
+def kronecker(i: int, j: int) -> int:
     """delta_ij = 1 if i = j else 0 (1.A.3a)."""
     return 1 if inputs.count(i, "i", 1) == inputs.count(j, "j", 1) else 0
 
 
-def permutation_sign(indices: Sequence[Any]) -> int:
+def permutation_sign(indices: Sequence[int]) -> int:
     """Sign of a sequence of distinct indices as a permutation of its sorted order: +1 for an
     even number of inversions, -1 for an odd number, 0 if an index repeats."""
     idx = [inputs.count(i, "index", 1) for i in indices]
@@ -57,7 +57,7 @@ def permutation_sign(indices: Sequence[Any]) -> int:
     return -1 if inversions % 2 else 1
 
 
-def levi_civita(*indices: Any) -> int:
+def levi_civita(*indices: int) -> int:
     """epsilon_{i j k ...} of N = len(indices) indices from 1..N (1.A.3a): +1 for an even
     permutation of (1 2 ... N), -1 for an odd one, 0 otherwise."""
     n = len(indices)
@@ -66,14 +66,14 @@ def levi_civita(*indices: Any) -> int:
     return permutation_sign(indices)
 
 
-def kronecker_dot(a: Sequence[Any], b: Sequence[Any]) -> Any:
+def kronecker_dot(a: Sequence[Real], b: Sequence[Real]) -> Real:
     """The dot product written with the Kronecker delta, A.B = delta_ij A_i B_j = sum_i A_i B_i
     (1.A.4a), in any dimension."""
     a, b = _vector(a, "A"), _vector(b, "B", len(a))
     return sum(kronecker(i + 1, j + 1) * a[i] * b[j] for i in range(len(a)) for j in range(len(b)))
 
 
-def levi_civita_cross(a: Sequence[Any], b: Sequence[Any]) -> list[Any]:
+def levi_civita_cross(a: Sequence[Real], b: Sequence[Real]) -> list[Real]:
     """The cross product written with the Levi-Civita symbol, (A x B)_k = epsilon_ijk A_i B_j
     (1.A.4b), three dimensions."""
     a, b = _vector(a, "A", DIMENSIONS), _vector(b, "B", DIMENSIONS)
@@ -95,7 +95,7 @@ class PolarProducts:
     cross: float
 
 
-def polar_products(length_a: Any, angle_a: Any, length_b: Any, angle_b: Any) -> PolarProducts:
+def polar_products(length_a: Real, angle_a: Real, length_b: Real, angle_b: Real) -> PolarProducts:
     """A.B = AB cos(theta_B - theta_A) and A x B = AB sin(theta_B - theta_A) (1.A.1), the
     longitudinal and transverse projections of Fig. 1.A.1."""
     for x, name in ((length_a, "A"), (angle_a, "theta_A"), (length_b, "B"), (angle_b, "theta_B")):
@@ -112,14 +112,14 @@ class RelativeComponents:
     the unit vector along A and on its perpendicular copy A↵ (A turned a quarter turn
     counterclockwise), and likewise on B and B↵."""
 
-    b_along_a: float  # B_A, the A-longitudinal component of B
-    b_across_a: float  # B_A↵, the A-transverse component of B
-    a_along_b: float  # A_B, the B-longitudinal component of A
-    a_across_b: float  # A_B↵, the B-transverse component of A
+    b_along_a: Real  # B_A, the A-longitudinal component of B
+    b_across_a: Real  # B_A↵, the A-transverse component of B
+    a_along_b: Real  # A_B, the B-longitudinal component of A
+    a_across_b: Real  # A_B↵, the B-transverse component of A
 
 
 def relative_components(
-    length_a: Any, angle_a: Any, length_b: Any, angle_b: Any
+    length_a: Real, angle_a: Real, length_b: Real, angle_b: Real
 ) -> RelativeComponents:
     """The relative components of plane vectors A and B given by lengths and lab angles
     (Fig. 1.A.1): each vector's Cartesian components dotted with the unit vector of the other
@@ -143,7 +143,7 @@ def relative_components(
     )
 
 
-def coriolis_acceleration(angular_speed: Any, speed: Any, angle: Any) -> float:
+def coriolis_acceleration(angular_speed: Real, speed: Real, angle: Real) -> float:
     """Magnitude of the Coriolis acceleration of a body moving at ``speed`` v, at ``angle``
     theta to the rotation axis, in a frame turning at ``angular_speed`` omega (line 16508).
 
@@ -159,7 +159,7 @@ def coriolis_acceleration(angular_speed: Any, speed: Any, angle: Any) -> float:
     w, v, th = (mpmath.mpf(x) for x in (angular_speed, speed, angle))
     across, along = v * mpmath.sin(th), v * mpmath.cos(th)
 
-    def seen(t: Any, k: int) -> Any:
+    def seen(t: mpmath.mpf, k: int) -> mpmath.mpf:
         x, y, z = across * t, 0 * t, along * t  # the inertial path through the axis
         c, s = mpmath.cos(w * t), mpmath.sin(w * t)
         return (c * x + s * y, -s * x + c * y, z)[k]
@@ -168,22 +168,22 @@ def coriolis_acceleration(angular_speed: Any, speed: Any, angle: Any) -> float:
     return float(mpmath.sqrt(sum(a * a for a in acceleration)))
 
 
-def levi_civita_determinant(matrix: Sequence[Sequence[Any]]) -> Any:
+def levi_civita_determinant(matrix: Sequence[Sequence[Real]]) -> Real:
     """det U = sum epsilon_{i j k ...} U_1i U_2j U_3k ... over all index tuples (1.A.5)."""
     rows = [list(r) for r in matrix]
     n = len(rows)
     if any(len(r) != n for r in rows):
         raise ValueError("a determinant needs a square matrix")
-    total: Any = 0
+    total: Real = 0
     for perm in itertools.permutations(range(1, n + 1)):
-        term: Any = levi_civita(*perm)
+        term: Real = levi_civita(*perm)
         for row, col in enumerate(perm):
             term = term * inputs.real(rows[row][col - 1], "matrix entry")
         total = total + term
     return total
 
 
-def determinant_by_minors(matrix: Sequence[Sequence[Any]]) -> Any:
+def determinant_by_minors(matrix: Sequence[Sequence[Real]]) -> Real:
     """det U expanded by minors of the first row, U11 M11 - U12 M12 + U13 M13 ... (1.A.5)."""
     rows = [list(r) for r in matrix]
     n = len(rows)
@@ -191,14 +191,14 @@ def determinant_by_minors(matrix: Sequence[Sequence[Any]]) -> Any:
         raise ValueError("a determinant needs a square matrix")
     if n == 1:
         return inputs.real(rows[0][0], "matrix entry")
-    total: Any = 0
+    total: Real = 0
     for col in range(n):
         minor = [r[:col] + r[col + 1 :] for r in rows[1:]]
         total = total + (-1) ** col * rows[0][col] * determinant_by_minors(minor)
     return total
 
 
-def triple_product(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> Any:
+def triple_product(a: Sequence[Real], b: Sequence[Real], c: Sequence[Real]) -> Real:
     """A . (B x C) = epsilon_ijk A_i B_j C_k (1.A.6a), the signed volume of the parallelepiped
     of A, B and C."""
     a, b, c = (_vector(v, n, DIMENSIONS) for v, n in ((a, "A"), (b, "B"), (c, "C")))
@@ -210,35 +210,35 @@ def triple_product(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> Any:
     )
 
 
-def double_cross(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> list[Any]:
+def double_cross(a: Sequence[Real], b: Sequence[Real], c: Sequence[Real]) -> list[Real]:
     """A x (B x C) computed as two cross products (the left side of the identity after
     (1.A.7))."""
     return levi_civita_cross(a, levi_civita_cross(b, c))
 
 
-def bac_cab(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> list[Any]:
+def bac_cab(a: Sequence[Real], b: Sequence[Real], c: Sequence[Real]) -> list[Real]:
     """(A.C) B - (A.B) C, the right side of the double-cross identity after (1.A.7)."""
     ac, ab = kronecker_dot(a, c), kronecker_dot(a, b)
     return [ac * bi - ab * ci for bi, ci in zip(b, c, strict=True)]
 
 
-def epsilon_contraction(i: Any, j: Any, m: Any, n: Any) -> int:
+def epsilon_contraction(i: int, j: int, m: int, n: int) -> int:
     """sum_k epsilon_ijk epsilon_mnk over k = 1..3 (the left side of (1.A.7))."""
     return sum(levi_civita(i, j, k) * levi_civita(m, n, k) for k in range(1, DIMENSIONS + 1))
 
 
-def delta_expansion(i: Any, j: Any, m: Any, n: Any) -> int:
+def delta_expansion(i: int, j: int, m: int, n: int) -> int:
     """delta_im delta_jn - delta_in delta_jm (the right side of (1.A.7))."""
     return kronecker(i, m) * kronecker(j, n) - kronecker(i, n) * kronecker(j, m)
 
 
-def heron_area_squared(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> Any:
+def heron_area_squared(a: Sequence[Real], b: Sequence[Real], c: Sequence[Real]) -> Real:
     """Squared area of the triangle with vertices a, b, c by Heron's formula in the squared
     side lengths: 16 Area^2 = 4 x y - (x + y - z)^2 for squared sides x, y, z. Exact for
     rational coordinates."""
     pa, pb, pc = (_vector(v, "vertex") for v in (a, b, c))
 
-    def sq(u: list[Any], w: list[Any]) -> Any:
+    def sq(u: list[Real], w: list[Real]) -> Real:
         return sum((ui - wi) ** 2 for ui, wi in zip(u, w, strict=True))
 
     x, y, z = sq(pa, pb), sq(pb, pc), sq(pc, pa)
@@ -248,13 +248,13 @@ def heron_area_squared(a: Sequence[Any], b: Sequence[Any], c: Sequence[Any]) -> 
     return numerator / 16
 
 
-def triangle_area(p: Sequence[Any], q: Sequence[Any], r: Sequence[Any]) -> float:
+def triangle_area(p: Sequence[Real], q: Sequence[Real], r: Sequence[Real]) -> float:
     """Area of the plane triangle with vertices p, q, r, by Heron's formula (the square root
     of ``heron_area_squared``); it knows nothing of bases, altitudes or cross products."""
     return math.sqrt(max(0.0, float(heron_area_squared(p, q, r))))
 
 
-def sum_triangle_area(length_a: Any, length_b: Any, angle: Any) -> float:
+def sum_triangle_area(length_a: Real, length_b: Real, angle: Real) -> float:
     """Area of the sum triangle (0, A, A + B) of Fig. 1.A.2c for vectors of lengths A and B at
     ``angle`` theta from A to B, by Heron's formula from its vertices (A along the x-axis)."""
     for x, name in ((length_a, "A"), (length_b, "B"), (angle, "theta")):
@@ -267,12 +267,12 @@ def sum_triangle_area(length_a: Any, length_b: Any, angle: Any) -> float:
 class AreaRatios:
     """Areas of the figures of Fig. 1.A.2 in units of |A x B|."""
 
-    parallelogram: Any
-    sum_triangle: Any
-    difference_triangle: Any
+    parallelogram: Real
+    sum_triangle: Real
+    difference_triangle: Real
 
 
-def area_ratios(a: Sequence[Any], b: Sequence[Any]) -> AreaRatios:
+def area_ratios(a: Sequence[Real], b: Sequence[Real]) -> AreaRatios:
     """The parallelogram of A and B and the triangles (0, A, A+B) and (0, A, A-B) of
     Fig. 1.A.2, their areas by Heron's formula divided by the plane cross product |A x B|:
     1, 1/2 and 1/2. Exact for rational components (the squared ratio is a rational square)."""

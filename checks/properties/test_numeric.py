@@ -67,4 +67,4 @@ def test_a_clock_angle_is_the_fraction_of_a_turn(hours: int, per_turn: int) -> N
     assert_close(angle, 2 * math.pi * float(Fraction(hours, per_turn)))
     assert_close(numeric.clock_angle(per_turn, per_turn), 2 * math.pi)
     with pytest.raises(ValueError, match="hours_per_turn"):
-        numeric.clock_angle(hours, per_turn + 0.5)
+        numeric.clock_angle(hours, per_turn + 0.5)  # type: ignore[arg-type]  # on purpose

@@ -22,6 +22,7 @@ from checks.properties.strategies import (
     small_fractions,
 )
 from mechmodel import planar
+from mechmodel.planar import Matrix, Vector
 
 pytestmark = pytest.mark.properties
 
@@ -32,7 +33,9 @@ def exact_matrices() -> st.SearchStrategy[tuple[tuple[Fraction, Fraction], ...]]
 
 
 @given(exact_matrices(), exact_matrices(), exact_matrices(), exact_plane_vectors())
-def test_products_associate_and_act_as_composition(a, b, c, v) -> None:
+def test_products_associate_and_act_as_composition(
+    a: Matrix[Fraction], b: Matrix[Fraction], c: Matrix[Fraction], v: Vector[Fraction]
+) -> None:
     """(A B) C = A (B C), (A B) v = A (B v): B acts first, then A (5.2b); the unit matrix
     changes nothing; det(A B) = det A det B (p. 5.18), exactly."""
     ab = planar.matrix_product(a, b)
@@ -45,7 +48,7 @@ def test_products_associate_and_act_as_composition(a, b, c, v) -> None:
 
 
 @given(exact_matrices(), matrix_powers(), matrix_powers())
-def test_powers_add_their_exponents(a, m: int, n: int) -> None:
+def test_powers_add_their_exponents(a: Matrix[Fraction], m: int, n: int) -> None:
     """A^m A^n = A^(m+n) for any integers, negative powers through A^-1 (5.4), (11.13);
     A^-1 A = 1. A singular matrix has no inverse."""
     if planar.determinant(a) == 0:
@@ -61,7 +64,9 @@ def test_powers_add_their_exponents(a, m: int, n: int) -> None:
 
 @given(mirror_angles(), mirror_angles(), plane_points(), plane_points())
 @example(math.pi / 2, 0.0, (1.0, 0.0), (0.0, 1.0))
-def test_rotations_compose_and_keep_dot_and_cross(a: float, b: float, u, v) -> None:
+def test_rotations_compose_and_keep_dot_and_cross(
+    a: float, b: float, u: Vector[float], v: Vector[float]
+) -> None:
     """R(a) R(b) = R(a + b) with det R = +1 (5.17a): a rotation keeps the dot and the cross
     product of two vectors, their lengths and the angle between them ((1.A.1), (10.27))."""
     composed = planar.matrix_product(planar.rotation(a), planar.rotation(b))
@@ -75,7 +80,9 @@ def test_rotations_compose_and_keep_dot_and_cross(a: float, b: float, u, v) -> N
 
 
 @given(exact_plane_vectors(), exact_plane_vectors())
-def test_dot_and_cross_are_the_cosine_and_sine_parts(u, v) -> None:
+def test_dot_and_cross_are_the_cosine_and_sine_parts(
+    u: Vector[Fraction], v: Vector[Fraction]
+) -> None:
     """u x v = -v x u, u x u = 0, and (u.v)^2 + (u x v)^2 = |u|^2 |v|^2: the AB cos and AB sin
     of one angle (1.A.1), exactly."""
     assert planar.cross(u, v) == -planar.cross(v, u)
@@ -104,4 +111,4 @@ def test_a_matrix_is_two_by_two() -> None:
     with pytest.raises(ValueError, match="2 x 2"):
         planar.as_matrix(((1, 2, 3), (4, 5, 6)))
     with pytest.raises(ValueError, match="integer"):
-        planar.matrix_power(planar.UNIT, 1.5)
+        planar.matrix_power(planar.UNIT, 1.5)  # type: ignore[call-overload]  # on purpose

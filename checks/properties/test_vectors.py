@@ -25,6 +25,7 @@ from mechmodel import planar, vectors
 pytestmark = pytest.mark.properties
 F = Fraction
 # generic exact vectors: every component distinct and nonzero, so a wrong product shows at once
+V3 = tuple[Fraction, Fraction, Fraction]
 A3, B3, C3 = (F(1), F(2), F(3)), (F(-2), F(1, 2), F(4)), (F(3), F(-1), F(1, 3))
 
 
@@ -54,7 +55,7 @@ def test_levi_civita_changes_sign_under_a_swap(perm: list[int], a: int, b: int) 
 
 @given(exact_vectors3(), exact_vectors3(), exact_vectors3())
 @example(A3, B3, C3)
-def test_triple_product_is_the_determinant_and_cyclic(a, b, c) -> None:
+def test_triple_product_is_the_determinant_and_cyclic(a: V3, b: V3, c: V3) -> None:
     """A . (B x C) = det [A; B; C] = eps_ijk A_i B_j C_k (1.A.6), unchanged by a cyclic
     shift and reversed by a swap."""
     t = vectors.triple_product(a, b, c)
@@ -67,14 +68,14 @@ def test_triple_product_is_the_determinant_and_cyclic(a, b, c) -> None:
 
 @given(exact_vectors3(), exact_vectors3(), exact_vectors3())
 @example(A3, B3, C3)
-def test_double_cross_expansion(a, b, c) -> None:
+def test_double_cross_expansion(a: V3, b: V3, c: V3) -> None:
     """A x (B x C) = (A . C) B - (A . B) C, the first application of (1.A.7)."""
     assert vectors.double_cross(a, b, c) == vectors.bac_cab(a, b, c)
 
 
 @given(exact_vectors3(), exact_vectors3())
 @example(A3, B3)
-def test_cross_product_is_antisymmetric_and_normal(a, b) -> None:
+def test_cross_product_is_antisymmetric_and_normal(a: V3, b: V3) -> None:
     """A x B = -B x A (anti-reflexive), it is perpendicular to both A and B, and
     |A x B|^2 + (A . B)^2 = |A|^2 |B|^2 (sine and cosine of one angle, (1.A.1))."""
     dot, ab = vectors.kronecker_dot, vectors.levi_civita_cross(a, b)
@@ -88,7 +89,7 @@ def test_levi_civita_determinant_equals_minor_expansion(matrix: list[list[int]])
     """det U as a Levi-Civita sum equals its expansion by minors (1.A.5) and numpy's value."""
     det = vectors.levi_civita_determinant(matrix)
     assert det == vectors.determinant_by_minors(matrix)
-    assert abs(det - float(np.linalg.det(np.array(matrix, float)))) <= 1e-9 * (1 + abs(det))
+    assert abs(det - float(np.linalg.det(np.array(matrix, float)))) <= 1e-9 * (1 + abs(float(det)))
 
 
 @given(
@@ -97,7 +98,9 @@ def test_levi_civita_determinant_equals_minor_expansion(matrix: list[list[int]])
     st.floats(min_value=0.01, max_value=100),
     st.floats(min_value=-7, max_value=7),
 )
-def test_polar_products_equal_component_products(la, ta, lb, tb) -> None:
+def test_polar_products_equal_component_products(
+    la: float, ta: float, lb: float, tb: float
+) -> None:
     """A . B = AB cos(theta_B - theta_A) = Ax Bx + Ay By and
     A x B = AB sin(theta_B - theta_A) = Ax By - Ay Bx (1.A.1a-b)."""
     a = (la * math.cos(ta), la * math.sin(ta))
@@ -111,7 +114,9 @@ def test_polar_products_equal_component_products(la, ta, lb, tb) -> None:
 @given(exact_plane_vectors(), exact_plane_vectors())
 @example((Fraction(1), Fraction(0)), (Fraction(0), Fraction(1)))  # unit square, A_y = 0
 @example((Fraction(3), Fraction(1)), (Fraction(1), Fraction(2)))  # the catalogue's sample pair
-def test_triangles_are_half_the_cross_product(a, b) -> None:
+def test_triangles_are_half_the_cross_product(
+    a: tuple[Fraction, Fraction], b: tuple[Fraction, Fraction]
+) -> None:
     """By Heron's formula the parallelogram of A and B has area |A x B| and the A+B and A-B
     triangles half of it (Fig. 1.A.2), exactly (rational ratios stay Fractions); parallel
     vectors span no figure."""
@@ -152,7 +157,7 @@ def test_heron_area_is_half_the_cross_product_anywhere(
     st.floats(min_value=-7, max_value=7),
 )
 @example(1.0, 0.0, 1.0, math.pi / 2)  # B a quarter turn ahead of A: B_A↵ = B, A_B↵ = -A
-def test_relative_components_give_the_products(la, ta, lb, tb) -> None:
+def test_relative_components_give_the_products(la: float, ta: float, lb: float, tb: float) -> None:
     """On axes made of the other vector (Fig. 1.A.1b-c) each vector keeps its length, the
     longitudinal components give A . B = A B_A = B A_B, and the transverse ones give
     A x B = A B_A↵ = -B A_B↵: cross products are anti-reflexive (A x B = -B x A)."""
@@ -175,7 +180,7 @@ def test_relative_components_give_the_products(la, ta, lb, tb) -> None:
 )
 @example(1.0, 1.0, math.pi / 2)
 @example(1.0, 1.0, 0.0)  # along the axis: no Coriolis acceleration
-def test_coriolis_acceleration_is_twice_omega_cross_v(w, v, theta) -> None:
+def test_coriolis_acceleration_is_twice_omega_cross_v(w: float, v: float, theta: float) -> None:
     """The apparent acceleration of a free body crossing the rotation axis is the Coriolis
     acceleration -2 omega x v (no centrifugal part on the axis): its magnitude is
     |2 omega x v| for omega along z and v at angle theta to it (line 16508)."""
@@ -192,7 +197,7 @@ def test_coriolis_acceleration_is_twice_omega_cross_v(w, v, theta) -> None:
     st.floats(min_value=0.1, max_value=3.0),
     st.floats(min_value=-5, max_value=5),
 )
-def test_triangle_areas_by_heron(la, lb, theta, shear) -> None:
+def test_triangle_areas_by_heron(la: float, lb: float, theta: float, shear: float) -> None:
     """Heron's formula from the vertices gives the sum triangle (0, A, A+B) of Fig. 1.A.2 half
     the cross product |A x B|, and any triangle half its base times its altitude, wherever
     its apex lies along the line parallel to the base."""

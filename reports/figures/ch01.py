@@ -94,7 +94,7 @@ def _slope_plots(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     left, right = fig.subplots(1, 2)
     for name, ident, colour in lines:
         v, mph = _si(claims, ident), value_of(claims, ident)
-        k_m, k_n = minkowski_slope(v, sx, sy), newton_slope(v, sx, sy)
+        k_m, k_n = float(minkowski_slope(v, sx, sy)), float(newton_slope(v, sx, sy))
         ends = [-SQUARES, SQUARES]
         left.plot(ends, [k_m * e for e in ends], color=colour, label=f"{name} {mph:g} mph")
         right.plot(ends, [k_n * e for e in ends], color=colour)
