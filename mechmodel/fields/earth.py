@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.fields.inverse_square_laws import inverse_square
 from mechmodel.fields.parabola import ParabolaGeometry, parabola_geometry
+from mechmodel.typing import Real
 
 
-def gravity_field(g: Any, radius: Any, r: Any) -> Any:
+def gravity_field(g: Real, radius: Real, r: Real) -> Real:
     """Radial gravitational field of a uniform Earth at distance ``r`` from its centre, m/s^2
     (negative: toward the centre).
 
@@ -36,7 +36,7 @@ def gravity_field(g: Any, radius: Any, r: Any) -> Any:
     return -g * radius * radius / (r * r)
 
 
-def gravity_potential(g: Any, radius: Any, r: Any) -> Any:
+def gravity_potential(g: Real, radius: Real, r: Real) -> Real:
     """Gravitational potential (energy per unit mass) of a uniform Earth, J/kg, zero at infinity.
 
     Outside: -g R^2 / r (= -GM/r). Inside: the parabola g (r^2/R - 3R) / 2, whose slope is
@@ -52,7 +52,7 @@ def gravity_potential(g: Any, radius: Any, r: Any) -> Any:
     return -g * radius * radius / r
 
 
-def potential_energy(mass: Any, g: Any, radius: Any, r: Any) -> Any:
+def potential_energy(mass: Real, g: Real, radius: Real, r: Real) -> Real:
     """Gravitational potential energy of ``mass`` at distance ``r`` from the centre, J."""
     inputs.mass(mass, "mass")
     return mass * gravity_potential(g, radius, r)
@@ -69,18 +69,18 @@ class InteriorPotential:
     ``centre_potential`` is the bottom of the parabola.
     """
 
-    surface: Any
-    quadratic: Any
-    offset: Any
-    quadratic_divisor: Any
-    offset_over_quadratic: Any
-    surface_potential: Any
-    surface_force: Any
-    surface_slope: Any
-    centre_potential: Any
+    surface: Real
+    quadratic: Real
+    offset: Real
+    quadratic_divisor: Real
+    offset_over_quadratic: Real
+    surface_potential: Real
+    surface_force: Real
+    surface_slope: Real
+    centre_potential: Real
 
 
-def interior_potential(surface: Any) -> InteriorPotential:
+def interior_potential(surface: Real) -> InteriorPotential:
     """The parabolic potential inside a uniform planet whose surface is at x = ``surface``, in
     units where GM = 1 (the book's Fig. 9.7 has surface = 1).
 
@@ -112,36 +112,36 @@ class InteriorCurve:
     ``value`` is U(x), ``spring`` its quadratic part alone, the potential of the linear force
     -x / surface^3 with zero at the centre, before the constant that matches -1/x is added."""
 
-    value: Any
-    spring: Any
+    value: Real
+    spring: Real
 
 
-def interior_potential_at(surface: Any, x: Any) -> InteriorCurve:
+def interior_potential_at(surface: Real, x: Real) -> InteriorCurve:
     """The parabolic potential inside a uniform planet (``interior_potential``) at ``x``, with
     |x| <= ``surface`` (GM = 1 units: the book's y = x^2/2 - 3/2 for surface = 1)."""
     pot = interior_potential(surface)
     inputs.real(x, "x")
-    if abs(x) > surface:
+    if not -surface <= x <= surface:
         raise ValueError("the point is outside the planet: |x| <= surface")
     spring = pot.quadratic * x * x
     return InteriorCurve(spring + pot.offset, spring)
 
 
-def starlet_energy(mass: Any, g: Any, radius: Any, r: Any, speed: Any) -> Any:
+def starlet_energy(mass: Real, g: Real, radius: Real, r: Real, speed: Real) -> Real:
     """Total energy KE + PE of a starlet of ``mass`` moving at ``speed`` at distance ``r`` from
     the centre of a uniform planet (``potential_energy``, zero at infinity), J ((9.5)-(9.7))."""
     inputs.real(speed, "speed")
     return mass * speed * speed / 2 + potential_energy(mass, g, radius, r)
 
 
-def centre_speed_squared(g: Any, radius: Any) -> Any:
+def centre_speed_squared(g: Real, radius: Real) -> Real:
     """Square of the speed at the centre of a starlet dropped from rest at the surface: twice
     the potential drop per unit mass from R to 0 (``gravity_potential``), m^2/s^2 ((9.7))."""
     drop = gravity_potential(g, radius, radius) - gravity_potential(g, radius, 0)
     return 2 * drop
 
 
-def interior_parabola(surface: Any) -> ParabolaGeometry:
+def interior_parabola(surface: Real) -> ParabolaGeometry:
     """The focus-directrix geometry of the interior potential's parabola (Fig. 9.7): its x^2
     coefficient from ``interior_potential`` (GM = 1 units) in ``parabola_geometry``."""
     return parabola_geometry(interior_potential(surface).quadratic)
@@ -154,15 +154,15 @@ class EscapeLadder:
     (zero at infinity); ``steps`` are the three energy jumps between them, and
     ``equal_steps`` the climb from the centre to escape counted in jumps of the first step."""
 
-    centre: Any
-    surface_rest: Any
-    orbit: Any
-    escape: Any
-    steps: tuple[Any, Any, Any]
-    equal_steps: Any
+    centre: Real
+    surface_rest: Real
+    orbit: Real
+    escape: Real
+    steps: tuple[Real, Real, Real]
+    equal_steps: Real
 
 
-def escape_ladder(surface: Any) -> EscapeLadder:
+def escape_ladder(surface: Real) -> EscapeLadder:
     """The three energy steps of "Starlet escapes! (In 3 equal steps)" for a planet of radius
     ``surface`` (GM = 1): each is half of GM m / R, 1/2 mgR in mks units."""
     pot = interior_potential(surface)
@@ -185,10 +185,10 @@ class SurfaceSpeeds:
     escape: float
     escape_over_orbit: float
     orbit_over_escape: float
-    escape_factor: Any
+    escape_factor: float
 
 
-def circular_orbit_speed(g: Any, radius: Any) -> float:
+def circular_orbit_speed(g: Real, radius: Real) -> float:
     """Speed of a circular orbit at the surface, v0 = sqrt(g R) (eq. (9.7b)).
 
     Also the speed a starlet dropped from the surface has at the centre: (9.5)-(9.7a) give
@@ -199,7 +199,7 @@ def circular_orbit_speed(g: Any, radius: Any) -> float:
     return math.sqrt(g * radius)
 
 
-def escape_speed(g: Any, radius: Any) -> float:
+def escape_speed(g: Real, radius: Real) -> float:
     """Escape speed from the surface, sqrt(2 g R): the kinetic energy that lifts the potential
     -g R to zero ((9.11a))."""
     inputs.positive(g, "g")
@@ -208,13 +208,13 @@ def escape_speed(g: Any, radius: Any) -> float:
     return math.sqrt(2 * kinetic_needed)
 
 
-def escape_speed_from_orbit_speed(orbit_speed: Any) -> float:
+def escape_speed_from_orbit_speed(orbit_speed: Real) -> float:
     """Escape speed Ve = v0 sqrt(2) from the grazing orbit speed v0 ((9.11a), the book's step)."""
     inputs.positive(orbit_speed, "orbit_speed")
     return orbit_speed * math.sqrt(2)
 
 
-def escape_speed_of_orbit(orbit_speed: Any) -> float:
+def escape_speed_of_orbit(orbit_speed: Real) -> float:
     """Escape speed from a planet's surface given its grazing orbit speed v0, by energies: the
     circular orbit has v0^2 = GM/R (gravity supplies the centripetal pull) and escape needs the
     kinetic energy GM m/R that lifts the potential -GM m/R to zero ((9.11a))."""
@@ -224,7 +224,7 @@ def escape_speed_of_orbit(orbit_speed: Any) -> float:
     return math.sqrt(2 * kinetic_per_mass)  # 1/2 v^2 = the kinetic energy per unit mass
 
 
-def escape_speed_gm(big_g: Any, mass: Any, radius: Any) -> float:
+def escape_speed_gm(big_g: Real, mass: Real, radius: Real) -> float:
     """Escape speed from the surface of a body of ``mass`` and ``radius``: ``escape_speed``
     with the surface gravity g = G M / R^2 ((9.11b); with the speed of light, (9.12a))."""
     inputs.positive(big_g, "G")
@@ -233,7 +233,7 @@ def escape_speed_gm(big_g: Any, mass: Any, radius: Any) -> float:
     return escape_speed(big_g * mass / (radius * radius), radius)
 
 
-def black_hole_radius(big_g: Any, mass: Any, c: Any) -> float:
+def black_hole_radius(big_g: Real, mass: Real, c: Real) -> float:
     """Radius at which the escape speed from a body of ``mass`` is ``c`` ((9.12b)): the escape
     speed squared falls as 1/R (``escape_speed_gm``), so R = 1 (v_e(1)/c)^2 in the units of R."""
     inputs.positive(c, "c")
@@ -241,14 +241,14 @@ def black_hole_radius(big_g: Any, mass: Any, c: Any) -> float:
     return (at_unit_radius / c) ** 2
 
 
-def surface_speeds(g: Any, radius: Any) -> SurfaceSpeeds:
+def surface_speeds(g: Real, radius: Real) -> SurfaceSpeeds:
     """The orbit and escape speeds at the surface and their ratios ((9.7b), (9.11))."""
     v0 = circular_orbit_speed(g, radius)
     ve = escape_speed(g, radius)
     return SurfaceSpeeds(v0, ve, ve / v0, v0 / ve, ve * ve / (g * radius))
 
 
-def schwarzschild_radius(big_g: Any, mass: Any, c: Any) -> Any:
+def schwarzschild_radius(big_g: Real, mass: Real, c: Real) -> Real:
     """Radius 2 G M / c^2 at which the escape speed sqrt(2GM/R) is the speed of light, m
     ((9.12))."""
     inputs.positive(big_g, "G")
@@ -257,7 +257,7 @@ def schwarzschild_radius(big_g: Any, mass: Any, c: Any) -> Any:
     return 2 * big_g * mass / (c * c)
 
 
-def shell_pair_pull(solid_angle: Any, near: Any, far: Any) -> Any:
+def shell_pair_pull(solid_angle: Real, near: Real, far: Real) -> Real:
     """Net pull on you of the two shell elements cut by a narrow cone of sight (Fig. 9.6): the
     near element m = A d^2 at distance d, the far one M = A D^2 at D, pulling opposite ways,
     G m / d^2 - G M / D^2 (G = 1). Zero for any d and D: no gravity inside a shell."""

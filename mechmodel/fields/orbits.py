@@ -13,13 +13,13 @@ import math
 import sys
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
 
 from mechmodel import inputs
 from mechmodel.fields.earth import circular_orbit_speed, gravity_field
+from mechmodel.typing import Real, Symbolic
 
 
-def tunnel_period(g: Any, radius: Any) -> float:
+def tunnel_period(g: Real, radius: Real) -> float:
     """Period of a full oscillation through any straight tunnel, 2 pi sqrt(R / g) (eq. (9.8)).
 
     It does not depend on the chord: every tunnel is a harmonic oscillator with the same
@@ -30,30 +30,30 @@ def tunnel_period(g: Any, radius: Any) -> float:
     return 2 * math.pi * math.sqrt(radius / g)
 
 
-def tunnel_transit_time(g: Any, radius: Any) -> float:
+def tunnel_transit_time(g: Real, radius: Real) -> float:
     """Time to fall through a tunnel to the far end, half a period: pi sqrt(R / g) (Fig. 9.8)."""
     return tunnel_period(g, radius) / 2
 
 
-def round_trip_time(transit: Any) -> Any:
+def round_trip_time(transit: Real) -> Real:
     """A full tunnel period from a one-way transit time: there and back, twice the transit
     (the 84-minute period from the 42 minutes of Fig. 9.8), in the transit's unit."""
     inputs.positive(transit, "transit")
     return 2 * transit
 
 
-def circular_orbit_period(g: Any, radius: Any) -> float:
+def circular_orbit_period(g: Real, radius: Real) -> float:
     """Period 2 pi R / v0 of the grazing circular orbit (Fig. 9.8)."""
     return 2 * math.pi * radius / circular_orbit_speed(g, radius)
 
 
-def orbit_meeting_fraction(g: Any, radius: Any) -> float:
+def orbit_meeting_fraction(g: Real, radius: Real) -> float:
     """Fraction of its orbit the grazing satellite covers while a body falls through the tunnel
     to the far side: the two meet "1/2-way around" (Fig. 9.8)."""
     return tunnel_transit_time(g, radius) / circular_orbit_period(g, radius)
 
 
-def chord_acceleration(g: Any, radius: Any, offset: Any, s: Any) -> Any:
+def chord_acceleration(g: Real, radius: Real, offset: Real, s: Real) -> float:
     """Acceleration along a straight tunnel (a chord passing ``offset`` from the centre) of a
     body at ``s`` from the chord's midpoint, m/s^2.
 
@@ -71,19 +71,19 @@ def chord_acceleration(g: Any, radius: Any, offset: Any, s: Any) -> Any:
     return gravity_field(g, radius, r) * s / r
 
 
-def chord_tunnel_period(g: Any, radius: Any, offset: Any) -> float:
+def chord_tunnel_period(g: Real, radius: Real, offset: Real) -> float:
     """Period of a body sliding without friction through a chord passing ``offset`` from the
     centre: 2 pi / sqrt(-a(s)/s), the same for every chord (the synchrony of Fig. 9.8)."""
     inputs.positive(radius, "radius")
     inputs.real(offset, "offset")
-    if not abs(offset) < radius:
+    if not -radius < offset < radius:
         raise ValueError("a chord passes inside the Earth: |offset| < radius")
     half_chord = math.sqrt(radius * radius - offset * offset)
     stiffness = -chord_acceleration(g, radius, offset, half_chord) / half_chord
     return 2 * math.pi / math.sqrt(stiffness)
 
 
-def chord_tunnel_position(g: Any, radius: Any, offset: Any, t: Any) -> tuple[float, float]:
+def chord_tunnel_position(g: Real, radius: Real, offset: Real, t: Real) -> tuple[float, float]:
     """Position s and velocity ds/dt, at time ``t``, of a body released at rest at the end of a
     chord passing ``offset`` from the centre (m, m/s): s = s0 cos(w t), w = 2 pi / period."""
     omega = 2 * math.pi / chord_tunnel_period(g, radius, offset)
@@ -91,7 +91,7 @@ def chord_tunnel_position(g: Any, radius: Any, offset: Any, t: Any) -> tuple[flo
     return half_chord * math.cos(omega * t), -half_chord * omega * math.sin(omega * t)
 
 
-def chord_length(radius: Any, angle: Any) -> float:
+def chord_length(radius: Real, angle: Real) -> float:
     """Length 2 R sin(angle/2) of the straight tunnel between two surface points ``angle``
     (radians) apart as seen from the centre (exercise 1.9.4: R sqrt(2) for 90 degrees)."""
     inputs.positive(radius, "radius")
@@ -99,7 +99,7 @@ def chord_length(radius: Any, angle: Any) -> float:
     return 2 * radius * math.sin(angle / 2)
 
 
-def time_zones(longitude: Any, hours_per_day: Any) -> float:
+def time_zones(longitude: Real, hours_per_day: Real) -> float:
     """Number of hourly time zones spanned by ``longitude`` (radians): one per 2 pi / 24."""
     inputs.real(longitude, "longitude")
     inputs.positive(hours_per_day, "hours_per_day")
@@ -124,7 +124,7 @@ class OscillatorState:
 
 
 def oscillator_orbit(
-    omega: Any, amp_x: Any, amp_y: Any, phase_x: Any, phase_y: Any, t: Any
+    omega: Real, amp_x: Real, amp_y: Real, phase_x: Real, phase_y: Real, t: Real
 ) -> OscillatorState:
     """State at time ``t`` of the isotropic oscillator x = X cos(w t + ax), y = Y cos(w t + ay)
     (force -m w^2 r: F = -kr implies Fx = -kx, Fy = -ky (9.15)).
@@ -146,7 +146,7 @@ def oscillator_orbit(
     return OscillatorState(x, y, vx, vy, ex, ey, x * vy - y * vx)
 
 
-def oscillator_amplitude(energy: Any, stiffness: Any) -> float:
+def oscillator_amplitude(energy: Real, stiffness: Real) -> float:
     """Amplitude X of an oscillator of energy E whose potential is 1/2 k x^2: at the turning
     point all the energy is potential, 1/2 k X^2 = E ((9.8b))."""
     inputs.positive(energy, "energy")
@@ -154,7 +154,7 @@ def oscillator_amplitude(energy: Any, stiffness: Any) -> float:
     return math.sqrt(energy / (stiffness / 2))
 
 
-def phase_velocity(energy: Any, stiffness: Any, omega: Any, theta: Any) -> float:
+def phase_velocity(energy: Real, stiffness: Real, omega: Real, theta: Real) -> float:
     """Velocity v = dx/dt = (dtheta/dt) (dx/dtheta) of the oscillator x = X sin(theta) of
     energy E (``oscillator_amplitude``), whose phase turns at the rate ``omega`` ((9.9a))."""
     inputs.real(omega, "omega")
@@ -174,7 +174,7 @@ class PhaseState:
     omega: float
 
 
-def oscillator_phase_state(energy: Any, stiffness: Any, mass: Any, theta: Any) -> PhaseState:
+def oscillator_phase_state(energy: Real, stiffness: Real, mass: Real, theta: Real) -> PhaseState:
     """The oscillator of ``energy``, ``stiffness`` and ``mass`` at phase ``theta``: x = X
     sin(theta) with 1/2 k X^2 = E, and v = omega dx/dtheta with omega^2 = k / m, the rate
     at which m x'' = -k x turns the phase of x = X sin(omega t + alpha) ((9.8)-(9.9))."""
@@ -187,7 +187,9 @@ def oscillator_phase_state(energy: Any, stiffness: Any, mass: Any, theta: Any) -
     )
 
 
-def oscillator_total_energy(mass: Any, stiffness: Any, x: Any, y: Any, vx: Any, vy: Any) -> Any:
+def oscillator_total_energy(
+    mass: Symbolic, stiffness: Symbolic, x: Symbolic, y: Symbolic, vx: Symbolic, vy: Symbolic
+) -> Symbolic:
     """Total energy of the isotropic 2-D oscillator at (x, y) with velocity (vx, vy): kinetic
     1/2 m |v|^2 plus the potential 1/2 k |r|^2 of the linear force F = -k r ((9.10), (9.15)).
     Plain operators (exact, symbolic)."""
@@ -196,17 +198,17 @@ def oscillator_total_energy(mass: Any, stiffness: Any, x: Any, y: Any, vx: Any, 
     return kinetic + potential
 
 
-def oscillator_initial_phase(x0: Any, amplitude: Any) -> float:
+def oscillator_initial_phase(x0: Real, amplitude: Real) -> float:
     """Initial phase alpha with x = X sin(alpha) = x0 at t = 0 ((9.8b), theta = w t + alpha):
     starting at the top of the swing, x0 = X, needs alpha = pi/2 (the clock of Fig. 9.10a)."""
     inputs.positive(amplitude, "amplitude")
     inputs.real(x0, "x0")
-    if abs(x0) > amplitude:
+    if not -amplitude <= x0 <= amplitude:
         raise ValueError("the start lies outside the swing: |x0| <= amplitude")
     return math.asin(x0 / amplitude)
 
 
-def clock_hour(hour: Any, lead: Any, clock_hours: Any) -> Any:
+def clock_hour(hour: Real, lead: Real, clock_hours: int) -> Real:
     """The hour ``lead`` hours after ``hour`` on a clock of ``clock_hours`` hours, written from
     -clock/2 (exclusive) to clock/2 as Fig. 9.10b labels its dials (8 then -7 on 16 hours)."""
     clock = inputs.count(clock_hours, "clock_hours", minimum=1)
@@ -221,13 +223,13 @@ class PhaseLag:
     """A relative phase lag of two oscillator dimensions: radians, hours on the clock, fraction
     of a period, and the lag with the leads switched (Figs. 9.10b, 9.11)."""
 
-    radians: Any
-    hours: Any
-    period_fraction: Any
-    reversed: Any
+    radians: Real
+    hours: float
+    period_fraction: float
+    reversed: Real
 
 
-def phase_lag(angle: Any, clock_hours: Any) -> PhaseLag:
+def phase_lag(angle: Real, clock_hours: Real) -> PhaseLag:
     """The lag ``angle`` (radians) as hours of a ``clock_hours`` clock and as a fraction of the
     period; switching the leads reverses its sign (right- vs left-handed orbits)."""
     inputs.real(angle, "angle")
@@ -236,7 +238,7 @@ def phase_lag(angle: Any, clock_hours: Any) -> PhaseLag:
     return PhaseLag(angle, fraction * clock_hours, fraction, -angle)
 
 
-def points_per_orbit(period: Any, step: Any) -> Any:
+def points_per_orbit(period: int, step: int) -> int:
     """Number of points of an orbit drawn one per ``step`` over one ``period`` (exercise 1.9.5)."""
     period = inputs.count(period, "period", minimum=1)
     step = inputs.count(step, "step", minimum=1)

@@ -13,16 +13,17 @@ from __future__ import annotations
 import math
 import sys
 from dataclasses import dataclass
-from typing import Any
+from typing import overload
 
 from scipy import optimize
 
 from mechmodel import inputs
 from mechmodel.fields.inverse_square_laws import power_law_calculus
 from mechmodel.numeric import complex_step_derivative, line_angle
+from mechmodel.typing import Real, Symbolic
 
 
-def parabola_point(x: Any, unit: Any = 1) -> Any:
+def parabola_point(x: Real, unit: Real = 1) -> Real:
     """Height of the point of the parabola y = x^2 / unit above ``x``, by the two-step
     construction of Fig. 9.1a.
 
@@ -36,7 +37,7 @@ def parabola_point(x: Any, unit: Any = 1) -> Any:
     return slope * x
 
 
-def power_law_force(a: Any, n: Any, x: Any) -> Any:
+def power_law_force(a: Real, n: Real, x: Real) -> Real:
     """Force F(x) = -dU/dx of the power-law potential U(x) = a x^n (Force = -Slope, (6.9)).
 
     For the oscillator U = x^2 this is Hooke's law F = -2x of Fig. 9.1b.
@@ -49,7 +50,7 @@ def power_law_force(a: Any, n: Any, x: Any) -> Any:
     return -n * a * x ** (n - 1)
 
 
-def power_law_force_slope(a: Any, n: Any, x: Any) -> Any:
+def power_law_force_slope(a: Real, n: Real, x: Real) -> Real:
     """Slope dF/dx of the force F = -dU/dx of U(x) = a x^n: the power rule applied twice
     (``power_law_calculus``). For the oscillator U = x^2 it is the constant slope of the Hooke
     line of Fig. 9.1b."""
@@ -79,13 +80,13 @@ class ForceTriangle:
     height (constant, whatever x): its hypotenuse is normal to the parabola's tangent.
     """
 
-    force: Any
-    scale: Any
-    base: Any
-    altitude: Any
+    force: Real
+    scale: Real
+    base: Real
+    altitude: Real
 
 
-def force_triangle(a: Any, x: Any) -> ForceTriangle:
+def force_triangle(a: Real, x: Real) -> ForceTriangle:
     """The force triangle at ``x`` on U = a x^2 (Fig. 9.1a): base F/(2a), altitude 1/(2a)."""
     inputs.positive(a, "a")
     force = power_law_force(a, 2, x)
@@ -97,7 +98,7 @@ def force_triangle(a: Any, x: Any) -> ForceTriangle:
     return ForceTriangle(force, scale, base, altitude)
 
 
-def normal_slope(slope: Any) -> Any:
+def normal_slope(slope: Real) -> Real:
     """Slope -1/s of the line normal to a line of slope s (Fig. 9.2: y = s x and y = -x/s)."""
     inputs.real(slope, "slope")
     if slope == 0:
@@ -105,7 +106,7 @@ def normal_slope(slope: Any) -> Any:
     return -1 / slope
 
 
-def angle_between_lines(slope1: Any, slope2: Any) -> float:
+def angle_between_lines(slope1: Real, slope2: Real) -> float:
     """Angle between two lines of the given slopes, radians, in [0, pi/2] (Fig. 9.2's 90-degree
     marks between y = s x and y = -x/s, and between y = x and y = -x)."""
     turn = abs(line_angle(slope1) - line_angle(slope2)) % math.pi
@@ -128,37 +129,37 @@ class ParabolaGeometry:
     x^2 = 4 p y, 1/(a p); ``latus_factor`` the 2 of x^2 = 2 lambda y, 1/(a lambda).
     """
 
-    a: Any
-    focal_height: Any
-    semi_latus_rectum: Any
-    focus_to_directrix: Any
-    directrix_height: Any
-    tip_to_directrix: Any
-    tip_radius_of_curvature: Any
-    latus_end_slope: Any
-    focal_factor: Any
-    latus_factor: Any
+    a: Real
+    focal_height: Real
+    semi_latus_rectum: Real
+    focus_to_directrix: Real
+    directrix_height: Real
+    tip_to_directrix: Real
+    tip_radius_of_curvature: Real
+    latus_end_slope: Real
+    focal_factor: Real
+    latus_factor: Real
 
-    def height(self, x: Any) -> Any:
+    def height(self, x: Real) -> Real:
         """The parabola's height a x^2 at ``x``."""
         return self.a * x * x
 
-    def focal_radius(self, x: Any) -> float:
+    def focal_radius(self, x: Real) -> float:
         """Distance from the point of the parabola above ``x`` to the focus."""
         dy = self.height(x) - self.focal_height
         return math.hypot(x, dy)
 
-    def directrix_distance(self, x: Any) -> Any:
+    def directrix_distance(self, x: Real) -> Real:
         """Distance from the point of the parabola above ``x`` down to the directrix."""
         return self.height(x) - self.directrix_height
 
-    def subnormal(self, x: Any) -> Any:
+    def subnormal(self, x: Real) -> Real:
         """Rise from the point above ``x`` to where its normal crosses the axis (= lambda)."""
         slope = 2 * self.a * x
         return self.semi_latus_rectum if slope == 0 else x / slope
 
 
-def parabola_geometry(a: Any) -> ParabolaGeometry:
+def parabola_geometry(a: Real) -> ParabolaGeometry:
     """Focus, directrix and latus rectum of y = a x^2 (Figs. 9.3, 9.4; 4 p y = x^2 = 2 lambda y).
 
     Exact with a ``Fraction`` ``a``; the tip's radius of curvature is (1 + y'^2)^(3/2) / y'' at
@@ -183,14 +184,22 @@ def parabola_geometry(a: Any) -> ParabolaGeometry:
     )
 
 
-def parabola_height_for_focus(p: Any, x: Any) -> Any:
+# real in, real out (exact with Fractions); a complex x for the complex-step slope
+# (parabola_slope_for_focus); sympy symbols for the formula claims
+@overload
+def parabola_height_for_focus(p: Real, x: Real) -> Real: ...
+@overload
+def parabola_height_for_focus(p: Real, x: complex) -> complex: ...
+@overload
+def parabola_height_for_focus(p: Symbolic, x: Symbolic) -> Symbolic: ...
+def parabola_height_for_focus(p: Symbolic, x: Symbolic | complex) -> Symbolic | complex:
     """Height y above its tip of the point at ``x`` of the parabola whose focus is ``p`` above
     the tip (Fig. 9.3b): the point as far from the focus (0, p) as from the directrix y = -p,
     x^2 + (y - p)^2 = (y + p)^2, so y = x^2 / (4 p). Plain operators (exact, symbolic)."""
     return x * x / (4 * p)
 
 
-def parabola_height_for_latus(lam: Any, x: Any) -> Any:
+def parabola_height_for_latus(lam: Symbolic, x: Symbolic) -> Symbolic:
     """Height y above its tip of the point at ``x`` of the parabola of semi-latus rectum
     ``lam`` (the half-width at the focus, Fig. 9.4): the focus is at p = lam / 2, so
     y = x^2 / (4 p) = x^2 / (2 lam)."""
@@ -221,7 +230,7 @@ def equidistant_height_for_latus(lam: float, x: float) -> float:
     return equidistant_height(lam / 2, x)
 
 
-def parabola_for_focus(p: Any) -> ParabolaGeometry:
+def parabola_for_focus(p: Real) -> ParabolaGeometry:
     """The focus-directrix geometry of the parabola whose focus is ``p`` above its tip
     (Figs. 9.3-9.4): y = a x^2 with a its height at x = 1 (``parabola_height_for_focus``).
     Exact with a ``Fraction``."""
@@ -229,7 +238,7 @@ def parabola_for_focus(p: Any) -> ParabolaGeometry:
     return parabola_geometry(parabola_height_for_focus(p, 1))
 
 
-def parabola_for_latus(lam: Any) -> ParabolaGeometry:
+def parabola_for_latus(lam: Real) -> ParabolaGeometry:
     """The geometry of the parabola y = a x^2 whose half-width at the focus is ``lam`` (the
     book's lambda): the points lam across are at the focus's height, a lam^2 = 1/(4a)
     (``parabola_geometry``'s focal height), so a = 1/(2 lam). Exact with a ``Fraction``."""
@@ -237,7 +246,7 @@ def parabola_for_latus(lam: Any) -> ParabolaGeometry:
     return parabola_geometry(1 / (lam + lam))
 
 
-def parabola_slope_for_focus(p: Any, x: Any) -> float:
+def parabola_slope_for_focus(p: Real, x: Real) -> float:
     """Slope dy/dx at ``x`` of the parabola whose focus is ``p`` above its tip, by the complex
     step on its height (``parabola_height_for_focus``): the x/lambda = x/(2p) of Fig. 9.4."""
     inputs.positive(p, "p")
@@ -254,7 +263,7 @@ class UnitSlopePoint:
     focal_distance: float
 
 
-def parabola_unit_slope_point(p: Any) -> UnitSlopePoint:
+def parabola_unit_slope_point(p: Real) -> UnitSlopePoint:
     """Where the parabola whose focus is ``p`` above its tip has slope 1: the slope is
     proportional to x (``parabola_slope_for_focus``), so x = 1 / (slope at x = 1); its distance
     from the focus follows from the point's height (``ParabolaGeometry.focal_radius``)."""
@@ -262,7 +271,7 @@ def parabola_unit_slope_point(p: Any) -> UnitSlopePoint:
     return UnitSlopePoint(x, parabola_for_focus(p).focal_radius(x))
 
 
-def focal_drop_angle(slope: Any) -> float:
+def focal_drop_angle(slope: Real) -> float:
     """Angle between the focal radius and the vertical drop line to the directrix at the point of
     the parabola whose tangent has slope ``slope``, radians (Figs. 9.4, 9.7).
 

@@ -8,9 +8,10 @@ an int, float or Fraction and ``_fraction`` gives an mpmath number back as its e
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import Any
 
 import mpmath
+
+from mechmodel.typing import Real
 
 DIGITS = 40  # mpmath working precision (significant digits) for e and compound interest
 
@@ -21,7 +22,7 @@ def _fraction(value: mpmath.mpf) -> Fraction:
     return Fraction(int(mantissa)) * Fraction(2) ** int(exponent)
 
 
-def _mp(value: Any) -> mpmath.mpf:
+def _mp(value: Real | mpmath.mpf) -> mpmath.mpf:
     """An mpmath number from an int, float, Fraction or mpmath number (at the current dps)."""
     if isinstance(value, Fraction):
         return mpmath.mpf(value.numerator) / value.denominator

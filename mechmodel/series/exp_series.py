@@ -13,7 +13,6 @@ from __future__ import annotations
 import cmath
 import math
 from fractions import Fraction
-from typing import Any
 
 import mpmath
 
@@ -22,9 +21,10 @@ from mechmodel.algebra import polynomial_derivative
 from mechmodel.series._common import DIGITS, _mp
 from mechmodel.series.binomials import pascal_triangle
 from mechmodel.series.phasors import unit_phasor
+from mechmodel.typing import Exact, Real, Symbolic
 
 
-def exp_series_term(x: Any, k: Any, *, exact: bool = False) -> Any:
+def exp_series_term(x: Real, k: int, *, exact: bool = False) -> Real:
     """The k-th term x^k / k! of the exponential series (10.5b)."""
     inputs.real(x, "x")
     k = inputs.count(k, "k")
@@ -33,7 +33,7 @@ def exp_series_term(x: Any, k: Any, *, exact: bool = False) -> Any:
     return x**k / math.factorial(k)
 
 
-def exp_partial_sum(x: Any, order: Any, *, exact: bool = False) -> Any:
+def exp_partial_sum(x: Real, order: int, *, exact: bool = False) -> Real:
     """Partial sum of e^x to precision order ``order``: sum_{k=0}^{order} x^k / k! (10.6)."""
     order = inputs.count(order, "order")
     return sum(exp_series_term(x, k, exact=exact) for k in range(order + 1))
@@ -45,14 +45,14 @@ def euler_number() -> mpmath.mpf:
         return +mpmath.e
 
 
-def exponential(x: Any) -> mpmath.mpf:
+def exponential(x: Real) -> mpmath.mpf:
     """e^x for a real x, to ``DIGITS`` digits (the function equal to its own slope, (10.1))."""
     inputs.real(x, "x")
     with mpmath.workdps(DIGITS):
         return mpmath.exp(_mp(x))
 
 
-def exp_pi_multiple(multiple: Any) -> mpmath.mpf:
+def exp_pi_multiple(multiple: Real) -> mpmath.mpf:
     """The real pi-exponential e^(multiple * pi), e.g. e^(-pi) of the text after (10.20)."""
     inputs.real(multiple, "multiple")
     with mpmath.workdps(DIGITS):
@@ -73,7 +73,7 @@ def _leading_coefficient(values: list[Fraction]) -> Fraction:
     return total
 
 
-def exp_series_coefficient(power: Any) -> Fraction:
+def exp_series_coefficient(power: int) -> Fraction:
     """Coefficient of (r t)^k in e^(r t), from the binomial limit (10.4)-(10.5a).
 
     In (1 + r t/n)^n the term (r t)^k has the coefficient B(n, k) / n^k; as n grows only the
@@ -87,7 +87,7 @@ def exp_series_coefficient(power: Any) -> Fraction:
     return _leading_coefficient(counts)
 
 
-def inverse_factorial(value: Any) -> int:
+def inverse_factorial(value: Exact) -> int:
     """The j with j! = value (the smallest such j, so 1 gives 0); ``ValueError`` if none."""
     target = Fraction(value)
     j, f = 0, 1
@@ -99,14 +99,14 @@ def inverse_factorial(value: Any) -> int:
     return j
 
 
-def exp_series_factorial(power: Any) -> int:
+def exp_series_factorial(power: int) -> int:
     """The j of the denominator j! of the (r t)^k term of the e-series (10.5a): the inverse
     factorial of 1 / ``exp_series_coefficient(k)`` (it is k)."""
     k = inputs.count(power, "power")
     return inverse_factorial(1 / exp_series_coefficient(k))
 
 
-def exp_series_correct_decimals(x: Any, order: Any) -> int:
+def exp_series_correct_decimals(x: Real, order: int) -> int:
     """Decimal places to which the order-``order`` partial sum of e^x is correct: the largest d
     with |partial sum - e^x| < 10^-d / 2 ("5-figure accuracy" of (10.6))."""
     order = inputs.count(order, "order")
@@ -118,20 +118,20 @@ def exp_series_correct_decimals(x: Any, order: Any) -> int:
         return d
 
 
-def exp_series_additions(order: Any) -> int:
+def exp_series_additions(order: int) -> int:
     """Additions needed for the order-``order`` partial sum: one fewer than its terms (10.6)."""
     order = inputs.count(order, "order")
     terms = [exp_series_term(1, k, exact=True) for k in range(order + 1)]
     return len(terms) - 1
 
 
-def exp_series_term_count(order: Any) -> int:
+def exp_series_term_count(order: int) -> int:
     """Number of terms of the order-``order`` partial sum of the e-series: k = 0..order."""
     order = inputs.count(order, "order")
     return len(range(order + 1))
 
 
-def exp_remainder_bound(x: Any, order: Any) -> Any:
+def exp_remainder_bound(x: Real, order: int) -> mpmath.mpf:
     """Lagrange bound on |e^x - partial sum to ``order``|: |x|^(o+1)/(o+1)! e^max(x, 0).
 
     For x > 0 the next term alone is not a bound (all later terms are positive); the factor
@@ -144,7 +144,7 @@ def exp_remainder_bound(x: Any, order: Any) -> Any:
         return next_term * (exponential(x) if x > 0 else 1)
 
 
-def exp_series_polynomial(rate: Any, time: Any, order: Any) -> Any:
+def exp_series_polynomial(rate: Symbolic, time: Symbolic, order: int) -> Symbolic:
     """The e-series (10.5a) of e^(r t) cut after its (r t)^``order`` term: sum_k c_k (r t)^k,
     the coefficients c_k those of the binomial limit (``exp_series_coefficient``: counted with
     Pascal's rule, not with factorials). Plain operators: symbols give an expression."""
@@ -153,7 +153,7 @@ def exp_series_polynomial(rate: Any, time: Any, order: Any) -> Any:
     return sum((exp_series_coefficient(k) * x**k for k in range(order + 1)), 0)
 
 
-def exp_series_polynomial_rate(rate: Any, time: Any, order: Any) -> Any:
+def exp_series_polynomial_rate(rate: Symbolic, time: Symbolic, order: int) -> Symbolic:
     """The time rate d/dt of ``exp_series_polynomial`` (10.9): the power rule (10.8b) applied
     term by term to that polynomial in t, whose coefficients are c_k r^k."""
     order = inputs.count(order, "order")
@@ -180,7 +180,7 @@ def exp_to_log_rotation() -> float:
     raise ValueError("no quarter turn maps y = e^x onto U = -ln y")
 
 
-def _log_potential_slope(y: Any) -> mpmath.mpf:
+def _log_potential_slope(y: Real) -> mpmath.mpf:
     """dU/dy of U(y) = -ln y by a symmetric difference quotient at high precision."""
     with mpmath.workdps(DIGITS):
         h = mpmath.mpf(10) ** (-(DIGITS // 3))
@@ -188,14 +188,14 @@ def _log_potential_slope(y: Any) -> mpmath.mpf:
         return (-mpmath.log(yy + h) + mpmath.log(yy - h)) / (2 * h)
 
 
-def log_potential_force(y: Any) -> float:
+def log_potential_force(y: Real) -> float:
     """The force F(y) = -dU/dy of the log potential U(y) = -ln y (Fig. 10.1b, c), from the
     slope of U by a difference quotient at high precision (it is 1/y)."""
     inputs.positive(y, "y")
     return float(-_log_potential_slope(y))
 
 
-def log_potential_normal_angle(y: Any) -> float:
+def log_potential_normal_angle(y: Real) -> float:
     """Angle (radians) between the hypotenuse of the force triangle (base F(y), altitude 1) and
     the tangent (1, dU/dy) of U = -ln y at y (Fig. 10.1c: "hypotenuse is 90 degrees to U(y)")."""
     inputs.positive(y, "y")

@@ -12,12 +12,12 @@ from __future__ import annotations
 import cmath
 import math
 from dataclasses import dataclass
-from typing import Any
 
 from mechmodel import inputs
+from mechmodel.typing import Real, Symbolic
 
 
-def imaginary_unit_power(k: Any) -> complex:
+def imaginary_unit_power(k: int) -> complex:
     """i^k by repeated multiplication by i = sqrt(-1) (exact in floating point)."""
     k = inputs.count(k, "k")
     value = complex(1, 0)
@@ -34,14 +34,14 @@ def imaginary_unit_period() -> int:
     return k
 
 
-def euler_series(theta: Any, order: Any) -> complex:
+def euler_series(theta: Real, order: int) -> complex:
     """Partial sum of e^(i theta) = sum_k (i theta)^k / k! to ``order`` (10.17)."""
     inputs.real(theta, "theta")
     order = inputs.count(order, "order")
     return sum(imaginary_unit_power(k) * theta**k / math.factorial(k) for k in range(order + 1))
 
 
-def unit_phasor(angle: Any = 0, pi_multiple: Any = 0) -> complex:
+def unit_phasor(angle: Real = 0, pi_multiple: Real = 0) -> complex:
     """e^(i phi) = cos phi + i sin phi (10.17) for phi = angle + pi_multiple * pi (radians)."""
     inputs.real(angle, "angle")
     inputs.real(pi_multiple, "pi_multiple")
@@ -50,7 +50,7 @@ def unit_phasor(angle: Any = 0, pi_multiple: Any = 0) -> complex:
 
 
 def phasor_divisor(
-    numerator_re: Any, numerator_im: Any, angle: Any, angle_sign: Any = 1, sign: Any = 1
+    numerator_re: Real, numerator_im: Real, angle: Real, angle_sign: Real = 1, sign: Real = 1
 ) -> complex:
     """The d of e^(i s phi) = sign (a + i b)/d: d = sign (a + i b) / e^(i s phi)
     ((10.21): e^(i pi/4) = (1 + i)/sqrt 2). Real where the identity holds."""
@@ -58,7 +58,7 @@ def phasor_divisor(
     return z / unit_phasor(float(angle) * float(angle_sign))
 
 
-def opposite_phasor_angle(angle: Any = 0, pi_multiple: Any = 0, exponent_sign: Any = -1) -> float:
+def opposite_phasor_angle(angle: Real = 0, pi_multiple: Real = 0, exponent_sign: int = -1) -> float:
     """The angle psi in [0, 2 pi) with -e^(s i psi) = e^(i phi), s = ``exponent_sign`` (-1 or +1):
     the "-e^(-i 3pi/4)" and "-e^(+i 5pi/4)" forms of e^(i pi/4) in (10.21). Radians."""
     if exponent_sign not in (-1, 1):
@@ -69,14 +69,14 @@ def opposite_phasor_angle(angle: Any = 0, pi_multiple: Any = 0, exponent_sign: A
     return psi % (2 * math.pi)
 
 
-def clockwise_angle(angle: Any = 0, pi_multiple: Any = 0) -> float:
+def clockwise_angle(angle: Real = 0, pi_multiple: Real = 0) -> float:
     """The clockwise angle psi in [0, 2 pi) with e^(-i psi) = e^(i phi) (e^(i5pi/4) = e^(-i3pi/4),
     Fig. 10.5a). Radians."""
     phi = float(angle) + float(pi_multiple) * math.pi
     return cmath.phase(unit_phasor(phi).conjugate()) % (2 * math.pi)
 
 
-def phasor_modulus(x: Any, y: Any) -> float:
+def phasor_modulus(x: Real, y: Real) -> float:
     """The modulus r = A = |psi| of the phasor with Cartesian parts psi_x = ``x``, psi_y = ``y``
     (the polar form of (10.19b), Fig. 10.5): the radius of x + i y in polar coordinates."""
     inputs.real(x, "x")
@@ -99,7 +99,7 @@ class PhasorDerivative:
     omega_power: int
 
 
-def phasor_derivative(order: Any) -> PhasorDerivative:
+def phasor_derivative(order: int) -> PhasorDerivative:
     """Differentiate e^(-i w t) ``order`` times: each derivative multiplies by -i w (10.22b)."""
     n = inputs.count(order, "order")
     factor, power = complex(1, 0), 0
@@ -109,7 +109,7 @@ def phasor_derivative(order: Any) -> PhasorDerivative:
     return PhasorDerivative(factor, power)
 
 
-def phasor_rate(omega: Any, x: Any, order: Any) -> Any:
+def phasor_rate(omega: Symbolic, x: Symbolic | complex, order: int) -> Symbolic | complex:
     """The ``order``-th time derivative of x(t) = x(0) e^(-i w t) as a multiple of x(t)
     ((10.22b), (10.23a)): the ``phasor_derivative`` factor times w^power times x."""
     d = phasor_derivative(order)
@@ -118,13 +118,13 @@ def phasor_rate(omega: Any, x: Any, order: Any) -> Any:
     return factor * omega**d.omega_power * x
 
 
-def unit_circle_radius(samples: Any = 12) -> float:
+def unit_circle_radius(samples: int = 12) -> float:
     """Largest |e^(i theta)| over ``samples`` angles around the circle: 1 (Fig. 10.5a)."""
     n = inputs.count(samples, "samples", minimum=1)
     return max(abs(unit_phasor(2 * math.pi * j / n)) for j in range(n))
 
 
-def rotate(x: Any, y: Any, angle: Any) -> tuple[float, float]:
+def rotate(x: Real, y: Real, angle: Real) -> tuple[float, float]:
     """The 2-D rotation of (x, y) by ``angle`` as the complex product e^(i phi)(x + i y)
     (10.27a): (x cos phi - y sin phi, x sin phi + y cos phi)."""
     z = unit_phasor(angle) * complex(float(x), float(y))

@@ -12,11 +12,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Any
+from typing import cast
 
 from mechmodel import inputs
 from mechmodel.series.binomials import factorial
 from mechmodel.series.derivatives import maclaurin_divisor
+from mechmodel.typing import Real, Symbolic
 
 _SINUSOIDS = ("sin", "cos")
 
@@ -38,7 +39,7 @@ class SinusoidDerivative:
     value_at_zero: int
 
 
-def sinusoid_derivative(kind: str, order: Any) -> SinusoidDerivative:
+def sinusoid_derivative(kind: str, order: int) -> SinusoidDerivative:
     """Differentiate sin or cos ``order`` times with (10.15): d/dt sin w t = w cos w t,
     d/dt cos w t = -w sin w t (each step one more factor w)."""
     function = _kind(kind)
@@ -54,7 +55,7 @@ def sinusoid_derivative(kind: str, order: Any) -> SinusoidDerivative:
     return SinusoidDerivative(sign, power, function, at_zero)
 
 
-def sinusoid_coefficient(kind: str, power: Any) -> Fraction:
+def sinusoid_coefficient(kind: str, power: int) -> Fraction:
     """Maclaurin coefficient c_n = x^(n)(0)/n! of sin t or cos t (w = 1), (10.12), (10.16)."""
     n = inputs.count(power, "power")
     return Fraction(sinusoid_derivative(kind, n).value_at_zero, factorial(n))
@@ -78,7 +79,7 @@ def sinusoid_series_factors(kind: str) -> list[int]:
     ]
 
 
-def sinusoid_powers(kind: str, count: Any) -> list[int]:
+def sinusoid_powers(kind: str, count: int) -> list[int]:
     """The first ``count`` powers p with a nonzero coefficient: odd for sine, even for cosine."""
     count = inputs.count(count, "count")
     out: list[int] = []
@@ -90,7 +91,7 @@ def sinusoid_powers(kind: str, count: Any) -> list[int]:
     return out
 
 
-def sinusoid_term_count(kind: str, order: Any) -> int:
+def sinusoid_term_count(kind: str, order: int) -> int:
     """Number of nonzero terms of the sine or cosine series up to power ``order``."""
     order = inputs.count(order, "order")
     return sum(1 for p in range(order + 1) if sinusoid_derivative(kind, p).value_at_zero)
@@ -127,21 +128,21 @@ def _sinusoid_terms(kind: str, order: int) -> list[tuple[int, int]]:
     return out
 
 
-def _sum_terms(terms: list[tuple[int, int]], x: Any) -> Any:
-    total: Any = 0
+def _sum_terms(terms: list[tuple[int, int]], x: Real) -> Real:
+    total: Real = 0
     for p, c in terms:
         total += c * x**p / math.factorial(p)
     return total
 
 
-def sinusoid_partial_sum(kind: str, x: Any, order: Any) -> Any:
+def sinusoid_partial_sum(kind: str, x: Real, order: int) -> Real:
     """Partial sum of the sine or cosine series (10.16) up to power ``order`` at x = w t."""
     inputs.real(x, "x")
     order = inputs.count(order, "order")
     return _sum_terms(_sinusoid_terms(kind, order), x)
 
 
-def sinusoid_coefficient_in_omega(kind: str, omega: Any, power: Any) -> Any:
+def sinusoid_coefficient_in_omega(kind: str, omega: Symbolic, power: int) -> Symbolic:
     """Maclaurin coefficient c_n = x^(n)(0)/n! of sin(w t) or cos(w t) as a function of w (the
     list after (10.15)): the n-th derivative of (10.15) at t = 0, sign w^n (cos 0) or 0 (sin 0),
     over the divisor D_n of (10.11). Plain operators: a symbol w gives an expression."""
@@ -150,29 +151,30 @@ def sinusoid_coefficient_in_omega(kind: str, omega: Any, power: Any) -> Any:
     return Fraction(d.value_at_zero, maclaurin_divisor(n)) * omega**d.omega_power
 
 
-def sinusoid_series(kind: str, omega: Any, t: Any, order: Any) -> Any:
+def sinusoid_series(kind: str, omega: Symbolic, t: Symbolic, order: int) -> Symbolic:
     """The sine or cosine series (10.16) of sin(w t) or cos(w t) up to the power ``order``, its
     zero terms included: sum_n x^(n)(0) t^n / D_n with the derivatives x^(n)(0) = sign w^n
     (cos 0) or 0 (sin 0) of (10.15) (``sinusoid_derivative``) and the Maclaurin divisors D_n
     (10.11). Plain operators: symbols give an expression."""
     order = inputs.count(order, "order")
-    total: Any = 0
+    total: Symbolic = 0
     for n in range(order + 1):
         d = sinusoid_derivative(kind, n)
         total += Fraction(d.value_at_zero, maclaurin_divisor(n)) * omega**d.omega_power * t**n
     return total
 
 
-def sinusoid_remainder_bound(x: Any, order: Any) -> Any:
+def sinusoid_remainder_bound(x: Real, order: int) -> Real:
     """Lagrange bound |x|^(o+1)/(o+1)! on |sin x - partial sum| and |cos x - partial sum|
     (every derivative of sin and cos is at most 1 in size)."""
     inputs.real(x, "x")
     order = inputs.count(order, "order")
-    return abs(x) ** (order + 1) / math.factorial(order + 1)
+    size = cast(Real, abs(x))  # mypy joins abs over the union Real to object
+    return size ** (order + 1) / math.factorial(order + 1)
 
 
 def sinusoid_max_error(
-    kind: str, order: Any, oscillations: Any = 1, samples: int = 2**10 + 1
+    kind: str, order: int, oscillations: Real = 1, samples: int = 2**10 + 1
 ) -> float:
     """Largest |partial sum - function| over ``oscillations`` full periods centred on t = 0,
     t in [-pi k, pi k] (on ``samples`` points; the error grows toward the ends)."""
@@ -185,7 +187,7 @@ def sinusoid_max_error(
     return max(abs(_sum_terms(terms, t) - reference(t)) for t in points)
 
 
-def sinusoid_min_order(kind: str, tolerance: Any, oscillations: Any = 1) -> int:
+def sinusoid_min_order(kind: str, tolerance: Real, oscillations: Real = 1) -> int:
     """Lowest order o whose partial sum stays within ``tolerance`` (an absolute error, the
     amplitude being 1) over ``oscillations`` full periods centred on t = 0 (Fig. 10.4)."""
     inputs.positive(tolerance, "tolerance")
@@ -198,6 +200,6 @@ def sinusoid_min_order(kind: str, tolerance: Any, oscillations: Any = 1) -> int:
     return order
 
 
-def sinusoid_min_terms(kind: str, tolerance: Any, oscillations: Any = 1) -> int:
+def sinusoid_min_terms(kind: str, tolerance: Real, oscillations: Real = 1) -> int:
     """Nonzero terms of the lowest-order partial sum within ``tolerance`` (see above)."""
     return sinusoid_term_count(kind, sinusoid_min_order(kind, tolerance, oscillations))
