@@ -360,7 +360,9 @@ def test_force_triangle_altitude_is_constant(a: Fraction, x: float) -> None:
     assert_close(tri.base, -x, rel=4 * REL, scale=abs(x))
     slope = 2 * float(a) * x  # the tangent's direction (1, slope) is normal to the hypotenuse
     assert_close(
-        tri.base + tri.altitude * slope, 0.0, scale=abs(tri.base) + abs(tri.altitude * slope)
+        tri.base + tri.altitude * slope,
+        0.0,
+        scale=abs(float(tri.base)) + abs(float(tri.altitude) * slope),
     )
 
 
@@ -464,6 +466,7 @@ def test_antiderivative_undoes_the_derivative(n: Fraction) -> None:
     down = fields.power_law_calculus(n)
     up = fields.power_law_calculus(down.derivative_exponent)
     assert up.antiderivative_exponent == n
+    assert up.antiderivative_coefficient is not None  # n - 1 != -1: a power, not a log
     assert up.antiderivative_coefficient * down.derivative_coefficient == 1
 
 
@@ -515,7 +518,7 @@ def test_potential_energy_is_mass_times_potential_and_its_slope_the_force(
     phi = fields.gravity_potential
     slope = (phi(g, radius, r + h) - phi(g, radius, r - h)) / (2 * h)
     # the central difference cancels digits of a potential far larger than its slope near r = 0
-    cancellation = 1e-9 * abs(phi(g, radius, r)) / h
+    cancellation = 1e-9 * abs(float(phi(g, radius, r))) / h
     field = fields.gravity_field(g, radius, r)
     assert math.isclose(-slope, field, rel_tol=1e-6, abs_tol=cancellation)
 

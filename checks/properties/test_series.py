@@ -28,6 +28,7 @@ from checks.properties.strategies import (
 )
 from mechmodel import fields, series
 from mechmodel.planar import rotation
+from mechmodel.typing import Real
 
 pytestmark = pytest.mark.properties
 REL = 1e-12
@@ -38,8 +39,9 @@ def _exp_scale(x: float) -> float:
     return math.exp(abs(x))
 
 
-def _mp(value: Fraction) -> mpmath.mpf:
-    return mpmath.mpf(value.numerator) / value.denominator
+def _mp(value: Real) -> mpmath.mpf:
+    exact = Fraction(value)  # a Fraction already for the exact partial sums
+    return mpmath.mpf(exact.numerator) / exact.denominator
 
 
 # -- the exponential series ------------------------------------------------------------------
@@ -621,7 +623,7 @@ def test_the_falling_factorial_grows_like_its_leading_power(k: int, n: int) -> N
     assert series.falling_factorial_leading_term(n, k) == n**k
     product = math.prod(n - j for j in range(k))
     if n >= k:
-        ratio = Fraction(product, series.falling_factorial_leading_term(n, k))
+        ratio = Fraction(product, int(series.falling_factorial_leading_term(n, k)))
         assert 1 - Fraction(k * (k - 1), 2 * n) <= ratio <= 1
 
 

@@ -112,17 +112,18 @@ def _earth_potential(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax = fig.add_subplot()
     xs = [-3 + 6 * k / 600 for k in range(601)]
     # in units of the surface: g = 1 and R = surface give U in mgR and F in mg
-    us = [gravity_potential(1, surface, abs(x)) for x in xs]
+    us = [float(gravity_potential(1, surface, abs(x))) for x in xs]
     fs = [math.copysign(1, x) * gravity_field(1, surface, abs(x)) for x in xs]
     ax.plot(xs, us, color="C0", label="potential $U(x)$")
     ax.plot(xs, fs, color="C3", label="force $F(x)$")
-    focus = pot.offset + geo.focal_height
-    directrix = pot.offset + geo.directrix_height
+    focus = float(pot.offset + geo.focal_height)
+    directrix = float(pot.offset + geo.directrix_height)
+    at_surface = float(pot.surface_potential)
     ax.plot([0], [focus], "o", color="C2", label="focus of the inside parabola")
     ax.axhline(directrix, color="C2", linestyle="--", linewidth=1, label="directrix")
-    ax.plot([0, surface], [focus, pot.surface_potential], color="C2", linewidth=1)
-    ax.plot([surface] * 2, [pot.surface_potential, directrix], color="C2", linewidth=1, zorder=3)
-    ax.plot([surface], [pot.surface_potential], "ko")
+    ax.plot([0, surface], [focus, at_surface], color="C2", linewidth=1)
+    ax.plot([surface] * 2, [at_surface, directrix], color="C2", linewidth=1, zorder=3)
+    ax.plot([surface], [at_surface], "ko")
     ax.axvline(-surface, color="0.85")
     ax.axvline(surface, color="0.85")
     ax.axhline(0, color="0.85")
@@ -145,25 +146,26 @@ def _earth_potential(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
 )
 def _parabola(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     geo = parabola_geometry(1)
+    focus, directrix = float(geo.focal_height), float(geo.directrix_height)
     lam = value_of(claims, "ch09.parabola.lambda")
     fig.set_size_inches(6.4, 5.2)
     fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     xs = [-1.6 + 3.2 * k / 320 for k in range(321)]
-    ax.plot(xs, [geo.height(x) for x in xs], color="C0", label="$y = x^2$")
-    ax.axhline(geo.directrix_height, color="C2", linestyle="--", label="directrix")
-    ax.plot([0], [geo.focal_height], "o", color="C2", label="focus")
+    ax.plot(xs, [float(geo.height(x)) for x in xs], color="C0", label="$y = x^2$")
+    ax.axhline(directrix, color="C2", linestyle="--", label="directrix")
+    ax.plot([0], [focus], "o", color="C2", label="focus")
     ax.plot(
         [-lam, lam],
-        [geo.focal_height] * 2,
+        [focus] * 2,
         color="C1",
         linewidth=2,
         label=r"latus rectum $2\lambda$",
     )
     for x in (-1.4, -0.9, 0.5, 1.1):
-        y = geo.height(x)
-        ax.plot([x, 0], [y, geo.focal_height], color="0.4", linewidth=1)
-        ax.plot([x, x], [y, geo.directrix_height], ":", color="0.4", linewidth=1)
+        y = float(geo.height(x))
+        ax.plot([x, 0], [y, focus], color="0.4", linewidth=1)
+        ax.plot([x, x], [y, directrix], ":", color="0.4", linewidth=1)
         ax.plot([x, x], [y, 2.6], color="C3", linewidth=0.8, alpha=0.6)
         ax.annotate(
             f"{geo.focal_radius(x):.3g}",
@@ -173,7 +175,7 @@ def _parabola(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             fontsize="small",
         )
     ax.set_aspect("equal")
-    ax.set_ylim(geo.directrix_height - 0.3, 2.6)
+    ax.set_ylim(directrix - 0.3, 2.6)
     ax.set_xlabel("$x$ (scaled)")
     ax.set_ylabel("$y$ (scaled)")
     ax.set_title("focal radius = distance to the directrix", fontsize="medium")
