@@ -16,7 +16,13 @@ FORBIDDEN = {
     "reference": {"reports", "checks", "conftest"},
     "reports": {"checks", "conftest"},
 }
-MECHMODEL_MAY_IMPORT = set(sys.stdlib_module_names) | {"numpy", "scipy", "mpmath", "sympy", "mechmodel"}
+MECHMODEL_MAY_IMPORT = set(sys.stdlib_module_names) | {
+    "numpy",
+    "scipy",
+    "mpmath",
+    "sympy",
+    "mechmodel",
+}
 FILE_CALLS = {"open", "read_text", "read_bytes", "loadtxt", "genfromtxt", "load", "files"}
 
 
