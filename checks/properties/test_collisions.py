@@ -138,7 +138,7 @@ def test_elastic_collision_conserves_kinetic_energy(
     """The float elastic bang keeps the kinetic energy to rounding error."""
     hit = collide(m1, m2, v1, v2)
     scale = hit.ke_before + hit.ke_after
-    error = abs(hit.ke_after - hit.ke_before)
+    error = abs(float(hit.ke_after - hit.ke_before))
     target(error / scale if scale else 0.0, label="relative energy error")
     assert error <= REL * scale
 

@@ -127,7 +127,7 @@ def test_pile_up_keeps_momentum_and_loses_energy(
     # the same momentum P in more mass: the energy P^2/2M falls as the mass grows
     assert pile.energy_out * (moving + still) == pile.energy_in * moving
     assert pile.slopes == tuple(range(1, len(pile.slopes) + 1))
-    assert pile.inverse_slopes == tuple(Fraction(1, k) for k in pile.slopes)
+    assert pile.inverse_slopes == tuple(1 / Fraction(k) for k in pile.slopes)
 
 
 @given(st.integers(2, 15), moderate_fraction_masses(), fraction_quantities())

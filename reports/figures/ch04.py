@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from mechmodel.bangs import History
+    from mechmodel.typing import Real
     from reference.evaluation import EvaluatedClaim
 
 # How far the book's BounceIt panels of Fig. 4.9 (a) and (b) run: display settings of the
@@ -63,12 +64,13 @@ def _vv_axes(ax: Axes, lim: float = 3.2) -> None:
     ax.set_ylabel("velocity $V_2$ of $M_2$ (scaled)")
 
 
-def _point(ax: Axes, p: tuple[float, float], text: str, offset: tuple[int, int]) -> None:
-    ax.plot(*p, "o", color="k", markersize=4)
-    ax.annotate(text, p, textcoords="offset points", xytext=offset, fontsize="small")
+def _point(ax: Axes, p: tuple[Real, Real], text: str, offset: tuple[int, int]) -> None:
+    xy = (float(p[0]), float(p[1]))
+    ax.plot(*xy, "o", color="k", markersize=4)
+    ax.annotate(text, xy, textcoords="offset points", xytext=offset, fontsize="small")
 
 
-def _signed(x: float) -> str:
+def _signed(x: Real) -> str:
     """x with its sign (none for 0), a true minus for a negative one."""
     return "0" if x == 0 else f"{x:+g}".replace("-", "\u2212")
 
@@ -150,7 +152,13 @@ def _final_locus(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     left, right = _two_panels(fig)
     ratios = [2 ** (k / 4) for k in range(-24, 41)]
     finals = [x2_launch(r, 1, v0) for r in ratios]
-    left.plot([f.v1 for f in finals], [f.v2 for f in finals], color="C0", lw=2, label="CPL")
+    left.plot(
+        [float(f.v1) for f in finals],
+        [float(f.v2) for f in finals],
+        color="C0",
+        lw=2,
+        label="CPL",
+    )
     for r in (Fraction(1, 4), 1, 4, 16):
         f = x2_launch(r, 1, v0)
         _point(left, (f.v1, f.v2), f"$M_1/M_2 = {r}$", (7, -9))
@@ -161,11 +169,13 @@ def _final_locus(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         ("M", x2_full_transfer_ratio(v0), (-58, -3)),
         ("7:1", value_of(claims, "ch04.x2.mass-ratio"), (-76, -3)),
     )
-    for name, r, offset in named:
-        f = x2_launch(r, 1, v0)
-        right.plot([f.start[0], f.v1], [f.start[1], f.v2], "-", lw=1)
+    for name, ratio, offset in named:
+        f = x2_launch(ratio, 1, v0)
+        right.plot([float(f.start[0]), float(f.v1)], [float(f.start[1]), float(f.v2)], "-", lw=1)
         _point(right, (f.v1, f.v2), f"{name} ({_signed(f.v1)}, {_signed(f.v2)})", offset)
-    right.plot([inf.start[0], inf.v1], [inf.start[1], inf.v2], "-", lw=1)
+    right.plot(
+        [float(inf.start[0]), float(inf.v1)], [float(inf.start[1]), float(inf.v2)], "-", lw=1
+    )
     _point(right, (inf.v1, inf.v2), "I", (6, -4))
     _point(right, inf.start, "INIT", (4, -12))
     boost = value_of(claims, "ch04.x2.u-point.boost")
@@ -213,8 +223,9 @@ def _space_time(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ceiling = value_of(claims, "ch04.history.ceiling")
     ax.axhline(0, color="0.3", lw=3, label="floor")
     ax.axhline(ceiling, color="0.6", lw=3, label="ceiling")
-    ax.plot(times, [p[0] for p in paths], "-", color="C0", label="$y_1$ of $M_1 = 7$")
-    ax.plot(times, [p[1] for p in paths], "-", color="C1", label="$y_2$ of $M_2 = 1$")
+    ts = [float(t) for t in times]
+    ax.plot(ts, [float(p[0]) for p in paths], "-", color="C0", label="$y_1$ of $M_1 = 7$")
+    ax.plot(ts, [float(p[1]) for p in paths], "-", color="C1", label="$y_2$ of $M_2 = 1$")
     offsets = {"01": (-10, -13), "12": (6, -5), "02": (-10, 5)}  # floor: below, ceiling: above
     for e in h.bangs:
         ax.annotate(
@@ -225,7 +236,7 @@ def _space_time(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             fontsize="small",
         )
     two = h.bangs[1]
-    ax.plot([two.time], [value_of(claims, "ch04.history.bang2.y2")], "x", color="C3", ms=7)
+    ax.plot([float(two.time)], [value_of(claims, "ch04.history.bang2.y2")], "x", color="C3", ms=7)
     ax.annotate(
         "book: $y_2(2) = 3$",
         (two.time, value_of(claims, "ch04.history.bang2.y2")),
@@ -270,7 +281,9 @@ def _ellipse_fill(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         states = [h.start[2:], *((b.v1, b.v2) for b in h.bangs)]
         ax.plot(*ellipse_outline(*e.radii), color="0.7")
         width = 0.8 if bangs < 50 else 0.3
-        ax.plot([s[0] for s in states], [s[1] for s in states], "-", lw=width, color="C0")
+        ax.plot(
+            [float(s[0]) for s in states], [float(s[1]) for s in states], "-", lw=width, color="C0"
+        )
         _vv_axes(ax, lim=3.2)
         ax.set_xlim(-1.9, 1.9)  # the ellipse is tall and narrow
         ax.set_title(f"({'ab'[k]}) to Bang-{bangs}", fontsize="medium")

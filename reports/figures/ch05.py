@@ -26,6 +26,7 @@ if TYPE_CHECKING:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
+    from mechmodel.typing import Matrix
     from reference.evaluation import EvaluatedClaim
 
 # The book prints no heights for Fig. 5.1(b): the balls start stacked on the floor (the X2
@@ -59,8 +60,8 @@ def _bang_sequence(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax.plot(xs, ys, color="0.7", label="energy ellipse")
     points = sequence.velocities
     ax.plot(
-        [p[0] for p in points],
-        [p[1] for p in points],
+        [float(p[0]) for p in points],
+        [float(p[1]) for p in points],
         "-o",
         markersize=3,
         label=f"{sequence.count} bangs after the floor bounce",
@@ -114,8 +115,9 @@ def _history_49_1(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     ax = fig.add_subplot()
     ax.axhline(CEILING, color="0.6", lw=3, label="ceiling")
     ax.axhline(0, color="0.3", lw=1.5, ls="--", label="floor (open after Bang-1)")
-    ax.plot(times, [p[0] for p in paths], color="C0", lw=2, label=f"$y_1$ of $m_1 = {m1:g}$")
-    ax.plot(times, [p[1] for p in paths], color="C1", lw=0.9, label=f"$y_2$ of $m_2 = {m2:g}$")
+    ts = [float(t) for t in times]
+    ax.plot(ts, [float(p[0]) for p in paths], color="C0", lw=2, label=f"$y_1$ of $m_1 = {m1:g}$")
+    ax.plot(ts, [float(p[1]) for p in paths], color="C1", lw=0.9, label=f"$y_2$ of $m_2 = {m2:g}$")
     for e in shown:
         if e.kind == "12" and e.number % 4 == 0:
             ax.annotate(
@@ -215,7 +217,8 @@ def _bang_triangle(ax: Axes, m1: float, m2: float) -> None:
     t = integral_right_triangle(m1, m2)
     theta = math.degrees(bang_angle(m1, m2).angle)
     ax.fill([0, t.base, t.base], [0, 0, t.altitude], color="C0", alpha=0.2)
-    ax.plot([0, t.base, t.base, 0], [0, 0, t.altitude, 0], color="C0")
+    base, altitude = float(t.base), float(t.altitude)
+    ax.plot([0, base, base, 0], [0, 0, altitude, 0], color="C0")
     labels = (
         (f"$m_1 - m_2 = {t.base:g}$", (t.base / 2, 0), (0, -14), "center", 0),
         (rf"$2√(m_1 m_2) = {t.altitude:g}$", (t.base, t.altitude / 2), (4, 0), "left", 0),
@@ -240,7 +243,7 @@ def _bang_triangle(ax: Axes, m1: float, m2: float) -> None:
     ax.set_title(r"(c) bang triangle: $\cos\theta = (m_1 - m_2)/M$", fontsize="medium")
 
 
-def _flag(ax: Axes, matrix: object, colour: str, label: str, style: str = "-") -> None:
+def _flag(ax: Axes, matrix: Matrix, colour: str, label: str, style: str = "-") -> None:
     points = [apply(matrix, p) for p in (*FLAG, FLAG[0])]
     ax.fill([p[0] for p in points], [p[1] for p in points], color=colour, alpha=0.35)
     ax.plot([p[0] for p in points], [p[1] for p in points], style, color=colour, label=label)

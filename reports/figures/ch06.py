@@ -18,6 +18,7 @@ from reports.figures import figure, value_of
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
+    from mechmodel.typing import Real
     from reference.evaluation import EvaluatedClaim
 
 # Fig. 6.4(a) starts the trapped ball 3 units from the wall (the figure, not the text); the
@@ -40,8 +41,8 @@ RELEASE_FRACTION = 1 / 3
 )
 def _force_laws(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     gaps = [0.3 + 0.02 * k for k in range(136)]
-    iso = [isothermal_force(1, 1, y).force for y in gaps]
-    adi = [adiabatic_force(1, 1, 1, y).force for y in gaps]
+    iso = [float(isothermal_force(1, 1, y).force) for y in gaps]
+    adi = [float(adiabatic_force(1, 1, 1, y).force) for y in gaps]
     fig.set_size_inches(9.0, 4.0)
     fig.set_layout_engine("constrained", w_pad=0.1)
     left, right = fig.add_subplot(1, 2, 1), fig.add_subplot(1, 2, 2)
@@ -54,8 +55,10 @@ def _force_laws(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     left.set_ylabel("force $F$ on $m_1$ (scaled)")
     left.set_title("(a) force", fontsize="medium")
     left.legend(fontsize="small")
-    right.plot(gaps, [isothermal_potential(1, 1, y) for y in gaps], label=r"isothermal $-\ln Y$")
-    right.plot(gaps, [adiabatic_potential(1, 1, 1, y) for y in gaps], label=r"adiabatic $1/(2Y^2)$")
+    iso_u = [float(isothermal_potential(1, 1, y)) for y in gaps]
+    adi_u = [float(adiabatic_potential(1, 1, 1, y)) for y in gaps]
+    right.plot(gaps, iso_u, label=r"isothermal $-\ln Y$")
+    right.plot(gaps, adi_u, label=r"adiabatic $1/(2Y^2)$")
     right.set_ylim(-1.5, 4)
     right.set_xlabel("gap $Y$ (scaled)")
     right.set_ylabel("potential $U(Y)$ (scaled)")
@@ -63,7 +66,7 @@ def _force_laws(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     right.legend(fontsize="small")
 
 
-def _two_gas_force(big_m: float, m: float, v0: float, y0: float, x: float) -> float:
+def _two_gas_force(big_m: float, m: float, v0: float, y0: float, x: float) -> Real:
     """Force on the big ball displaced x from the middle of two adiabatic gases (Fig. 6.3)."""
     return adiabatic_force(m, v0, y0, y0 + x).force - adiabatic_force(m, v0, y0, y0 - x).force
 
@@ -137,7 +140,8 @@ def _trapped_ball(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
     # the little ball: from the big ball to the wall and back, bang after bang
-    xs, ts = [-TRAPPED_GAP], [0.0]
+    xs: list[Real] = [-TRAPPED_GAP]
+    ts: list[Real] = [0.0]
     for speed, wall_time in zip(run.speeds, run.times, strict=True):
         xs.append(0.0)
         ts.append(wall_time)
@@ -145,11 +149,17 @@ def _trapped_ball(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         meet = wall_time + (TRAPPED_GAP - v_wall * wall_time) / (speed + v_wall)
         xs.append(-speed * (meet - wall_time))
         ts.append(meet)
-    ax.plot(xs, ts, "-o", markersize=3, label="little ball $m_2$")
+    ax.plot(
+        [float(x) for x in xs],
+        [float(t) for t in ts],
+        "-o",
+        markersize=3,
+        label="little ball $m_2$",
+    )
     t_end = ts[-1]
     ax.plot(
-        [-TRAPPED_GAP, -TRAPPED_GAP + v_wall * t_end],
-        [0, t_end],
+        [-TRAPPED_GAP, float(-TRAPPED_GAP + v_wall * t_end)],
+        [0, float(t_end)],
         label=f"big ball, $v_1 = {v_wall:g}$",
     )
     ax.axvline(0, color="k", label="wall")
@@ -157,7 +167,11 @@ def _trapped_ball(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         zip(run.ranges, run.times, run.products, strict=True)
     ):
         ax.plot(
-            [-rng, 0], [wall_time, wall_time], ":", color="0.5", label="range" if k == 0 else None
+            [-float(rng), 0],
+            [float(wall_time)] * 2,
+            ":",
+            color="0.5",
+            label="range" if k == 0 else None,
         )
         if k < 3:  # the later ones crowd together near the wall
             ax.annotate(
