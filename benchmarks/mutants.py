@@ -9,8 +9,8 @@ the copy). ``--only`` retries chosen mutants of the sample, as the run prints th
 
 ``--package mechmodel`` (the default) mutates the reference physics and runs the claim tests, the
 input and sensitivity tests and the mutated module's properties. ``--package reference`` mutates
-the judge (``JUDGE``: compare, numbers, tokens, calls, evaluation) and runs ``JUDGE_TESTS``; with
-``--count 0`` every site is tried, not a sample.
+the judge (``JUDGE``: compare, numbers, tokens, calls, modelling, evaluation, evaluated) and runs
+``JUDGE_TESTS``; with ``--count 0`` every site is tried, not a sample.
 
     python benchmarks/mutants.py [--package mechmodel|reference] [--count 150] [--seed 0]
                                  [--timeout 120] [--jobs 2] [--module series]
@@ -43,7 +43,7 @@ TESTS = (
     "checks/test_mechmodel_inputs.py",
     "checks/test_sensitivity.py",
 )  # and the property module of the mutated mechmodel module
-JUDGE = ("compare", "numbers", "tokens", "calls", "evaluation")
+JUDGE = ("compare", "numbers", "tokens", "calls", "modelling", "evaluation", "evaluated")
 JUDGE_TESTS = (
     "checks/test_claims.py",
     "checks/test_comparison.py",

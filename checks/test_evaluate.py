@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from mechmodel.typing import Estimate, not_monotonic
-from reference import calls, tables
+from reference import calls, modelling, tables
 from reference import evaluation as evaluate
 from reference.book import Book
 from reference.catalog import Catalog, ChapterFile
@@ -34,7 +34,7 @@ def run(book: Book, *claims: Claim) -> dict[str, evaluate.EvaluatedClaim]:
 
 def fake_model(monkeypatch: pytest.MonkeyPatch, func: Any) -> None:
     monkeypatch.setattr(calls, "resolve", lambda name: func)
-    monkeypatch.setattr(evaluate, "resolve", lambda name: func)
+    monkeypatch.setattr(modelling, "resolve", lambda name: func)
 
 
 def test_a_verdict_that_changes_within_the_model_error_is_indeterminate(
