@@ -62,8 +62,10 @@ SANITY = {
     "mechmodel": "mechmodel/collisions.py:0 swap Add",
     "reference": "reference/compare.py:0 swap Add",
 }  # a mutant each run must kill
-SWAPS = {
+OPERATOR_SWAPS: dict[type[ast.operator], type[ast.operator]] = {
     ast.Add: ast.Sub, ast.Sub: ast.Add, ast.Mult: ast.Div, ast.Div: ast.Mult,
+}  # fmt: skip
+COMPARE_SWAPS: dict[type[ast.cmpop], type[ast.cmpop]] = {
     ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt,
 }  # fmt: skip
 
@@ -88,12 +90,12 @@ def _nudgeable(value: object) -> bool:
 
 def _sites(tree: ast.AST) -> Iterator[tuple[str, ast.AST]]:
     for node in ast.walk(tree):
-        if isinstance(node, ast.BinOp) and type(node.op) in SWAPS:
+        if isinstance(node, ast.BinOp) and type(node.op) in OPERATOR_SWAPS:
             yield f"swap {type(node.op).__name__}", node
             for side in (node.left, node.right):
                 if isinstance(side, ast.Constant) and side.value == 2:
                     yield "drop factor 2", node
-        elif isinstance(node, ast.Compare) and type(node.ops[0]) in SWAPS:
+        elif isinstance(node, ast.Compare) and type(node.ops[0]) in COMPARE_SWAPS:
             yield f"flip {type(node.ops[0]).__name__}", node
         elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
             yield "drop minus", node
@@ -109,18 +111,25 @@ def _sites(tree: ast.AST) -> Iterator[tuple[str, ast.AST]]:
 
 def _mutate(kind: str, node: ast.AST) -> ast.AST:
     if kind.startswith("swap") and isinstance(node, ast.BinOp):
-        return ast.BinOp(node.left, SWAPS[type(node.op)](), node.right)
+        return ast.BinOp(node.left, OPERATOR_SWAPS[type(node.op)](), node.right)
     if kind == "drop factor 2" and isinstance(node, ast.BinOp):
         left_two = isinstance(node.left, ast.Constant) and node.left.value == 2
         return node.right if left_two else node.left
     if kind.startswith("flip") and isinstance(node, ast.Compare):
-        return ast.Compare(node.left, [SWAPS[type(node.ops[0])](), *node.ops[1:]], node.comparators)
+        flipped = COMPARE_SWAPS[type(node.ops[0])]()
+        return ast.Compare(node.left, [flipped, *node.ops[1:]], node.comparators)
     if kind == "drop minus" and isinstance(node, ast.UnaryOp):
         return node.operand
     if kind == "nudge constant" and isinstance(node, ast.Constant):
-        return ast.Constant(node.value + 1 if isinstance(node.value, int) else node.value * 1.01)
-    if kind == "swap returned values" and isinstance(node, ast.Return):
-        elts = list(node.value.elts)  # type: ignore[union-attr]
+        value = node.value
+        if isinstance(value, int | float):  # what _nudgeable lets through
+            return ast.Constant(value + 1 if isinstance(value, int) else value * 1.01)
+    if (
+        kind == "swap returned values"
+        and isinstance(node, ast.Return)
+        and isinstance(node.value, ast.Tuple)
+    ):
+        elts = list(node.value.elts)
         elts[0], elts[1] = elts[1], elts[0]
         return ast.Return(ast.Tuple(elts, ast.Load()))
     raise ValueError(kind)
