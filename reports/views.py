@@ -71,7 +71,7 @@ def tolerance_shown(claim: EvaluatedClaim) -> str:
 
 
 def verdict_shown(claim: EvaluatedClaim) -> str:
-    text = claim.verdict
+    text: str = claim.verdict
     if claim.rounding_reason:
         text += f" ({claim.rounding_reason})"
     if claim.matched_edition:
