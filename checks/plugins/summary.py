@@ -55,7 +55,7 @@ def pytest_sessionfinish(session: pytest.Session) -> None:
 
 
 @pytest.hookimpl(optionalhook=True)
-def pytest_testnodedown(node: Any, error: object) -> None:
+def pytest_testnodedown(node: Any, error: object) -> None:  # node: xdist's WorkerController
     """The controller keeps the first verdict counts a worker sends (all workers evaluate the
     same catalog against the same book), so it need not evaluate the catalog once more."""
     del error
@@ -68,7 +68,7 @@ def pytest_testnodedown(node: Any, error: object) -> None:
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)
 def pytest_terminal_summary(
-    terminalreporter: Any, exitstatus: int, config: pytest.Config
+    terminalreporter: pytest.TerminalReporter, exitstatus: int, config: pytest.Config
 ) -> Generator[None]:
     result = yield
     counts = config.stash.get(keys.WORKER_VERDICTS, None)
