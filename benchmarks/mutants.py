@@ -135,10 +135,16 @@ def _mutate(kind: str, node: ast.AST) -> ast.AST:
     raise ValueError(kind)
 
 
+def topic(path: str) -> str:
+    """A mutated module's topic, whose properties are ``checks/properties/test_<topic>.py``:
+    ``mechmodel/series.py`` and ``mechmodel/series/sums.py`` are both ``series``."""
+    return Path(Path(path).parts[1]).stem
+
+
 def enumerate_mutants(root: Path, package: str = "mechmodel") -> list[Mutant]:
     """Every mutation site of ``package``: all its modules for mechmodel, the judge's for
     reference."""
-    paths = sorted((root / package).glob("*.py"))
+    paths = sorted((root / package).rglob("*.py"))  # a topic split into a subpackage too
     if package == "reference":
         paths = [root / "reference" / f"{name}.py" for name in JUDGE]
     out = []
@@ -180,7 +186,7 @@ def run_tests(root: Path, book: str, timeout: float, mutated: str | None = None)
         if mutated is None:
             tests += ["checks/properties", *JUDGE_TESTS]
         else:
-            properties = root / "checks" / "properties" / f"test_{Path(mutated).stem}.py"
+            properties = root / "checks" / "properties" / f"test_{topic(mutated)}.py"
             if properties.exists():
                 tests.append(str(properties.relative_to(root)))
     pytest = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
@@ -249,7 +255,7 @@ def main() -> None:
             sys.exit("the sanity mutant survived: are the tests importing the copy?")
         mutants = enumerate_mutants(root, args.package)
         if args.module:
-            mutants = [m for m in mutants if Path(m.path).stem == args.module]
+            mutants = [m for m in mutants if topic(m.path) == args.module]
         count = len(mutants) if args.count == 0 else min(args.count, len(mutants))
         sample = random.Random(args.seed).sample(mutants, count)
         if args.only:

@@ -35,7 +35,7 @@ def imports(path: Path) -> set[str]:
 def test_no_forbidden_imports(package: str) -> None:
     bad = {
         (path.name, name)
-        for path in (ROOT / package).glob("*.py")
+        for path in (ROOT / package).rglob("*.py")
         for name in imports(path) & FORBIDDEN[package]
     }
     assert not bad
@@ -44,7 +44,7 @@ def test_no_forbidden_imports(package: str) -> None:
 def test_mechmodel_imports_only_the_standard_library_and_numerics() -> None:
     bad = {
         (path.name, name)
-        for path in (ROOT / "mechmodel").glob("*.py")
+        for path in (ROOT / "mechmodel").rglob("*.py")
         for name in imports(path) - MECHMODEL_MAY_IMPORT
     }
     assert not bad
@@ -52,7 +52,7 @@ def test_mechmodel_imports_only_the_standard_library_and_numerics() -> None:
 
 def test_mechmodel_reads_no_files() -> None:
     calls = set()
-    for path in (ROOT / "mechmodel").glob("*.py"):
+    for path in (ROOT / "mechmodel").rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, ast.Call):
                 func = node.func
