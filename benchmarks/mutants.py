@@ -9,8 +9,8 @@ the copy). ``--only`` retries chosen mutants of the sample, as the run prints th
 
 ``--package mechmodel`` (the default) mutates the reference physics and runs the claim tests, the
 input and sensitivity tests and the mutated module's properties. ``--package reference`` mutates
-the judge (``JUDGE``: compare, numbers, tokens, calls, evaluation) and runs ``JUDGE_TESTS``; with
-``--count 0`` every site is tried, not a sample.
+the judge (``JUDGE``: compare, numbers, tokens, calls, modelling, evaluation, evaluated) and runs
+``JUDGE_TESTS``; with ``--count 0`` every site is tried, not a sample.
 
     python benchmarks/mutants.py [--package mechmodel|reference] [--count 150] [--seed 0]
                                  [--timeout 120] [--jobs 2] [--module series]
@@ -43,7 +43,7 @@ TESTS = (
     "checks/test_mechmodel_inputs.py",
     "checks/test_sensitivity.py",
 )  # and the property module of the mutated mechmodel module
-JUDGE = ("compare", "numbers", "tokens", "calls", "evaluation")
+JUDGE = ("compare", "numbers", "tokens", "calls", "modelling", "evaluation", "evaluated")
 JUDGE_TESTS = (
     "checks/test_claims.py",
     "checks/test_comparison.py",
@@ -62,8 +62,10 @@ SANITY = {
     "mechmodel": "mechmodel/collisions.py:0 swap Add",
     "reference": "reference/compare.py:0 swap Add",
 }  # a mutant each run must kill
-SWAPS = {
+OPERATOR_SWAPS: dict[type[ast.operator], type[ast.operator]] = {
     ast.Add: ast.Sub, ast.Sub: ast.Add, ast.Mult: ast.Div, ast.Div: ast.Mult,
+}  # fmt: skip
+COMPARE_SWAPS: dict[type[ast.cmpop], type[ast.cmpop]] = {
     ast.Lt: ast.LtE, ast.LtE: ast.Lt, ast.Gt: ast.GtE, ast.GtE: ast.Gt,
 }  # fmt: skip
 
@@ -88,12 +90,12 @@ def _nudgeable(value: object) -> bool:
 
 def _sites(tree: ast.AST) -> Iterator[tuple[str, ast.AST]]:
     for node in ast.walk(tree):
-        if isinstance(node, ast.BinOp) and type(node.op) in SWAPS:
+        if isinstance(node, ast.BinOp) and type(node.op) in OPERATOR_SWAPS:
             yield f"swap {type(node.op).__name__}", node
             for side in (node.left, node.right):
                 if isinstance(side, ast.Constant) and side.value == 2:
                     yield "drop factor 2", node
-        elif isinstance(node, ast.Compare) and type(node.ops[0]) in SWAPS:
+        elif isinstance(node, ast.Compare) and type(node.ops[0]) in COMPARE_SWAPS:
             yield f"flip {type(node.ops[0]).__name__}", node
         elif isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
             yield "drop minus", node
@@ -109,27 +111,40 @@ def _sites(tree: ast.AST) -> Iterator[tuple[str, ast.AST]]:
 
 def _mutate(kind: str, node: ast.AST) -> ast.AST:
     if kind.startswith("swap") and isinstance(node, ast.BinOp):
-        return ast.BinOp(node.left, SWAPS[type(node.op)](), node.right)
+        return ast.BinOp(node.left, OPERATOR_SWAPS[type(node.op)](), node.right)
     if kind == "drop factor 2" and isinstance(node, ast.BinOp):
         left_two = isinstance(node.left, ast.Constant) and node.left.value == 2
         return node.right if left_two else node.left
     if kind.startswith("flip") and isinstance(node, ast.Compare):
-        return ast.Compare(node.left, [SWAPS[type(node.ops[0])](), *node.ops[1:]], node.comparators)
+        flipped = COMPARE_SWAPS[type(node.ops[0])]()
+        return ast.Compare(node.left, [flipped, *node.ops[1:]], node.comparators)
     if kind == "drop minus" and isinstance(node, ast.UnaryOp):
         return node.operand
     if kind == "nudge constant" and isinstance(node, ast.Constant):
-        return ast.Constant(node.value + 1 if isinstance(node.value, int) else node.value * 1.01)
-    if kind == "swap returned values" and isinstance(node, ast.Return):
-        elts = list(node.value.elts)  # type: ignore[union-attr]
+        value = node.value
+        if isinstance(value, int | float):  # what _nudgeable lets through
+            return ast.Constant(value + 1 if isinstance(value, int) else value * 1.01)
+    if (
+        kind == "swap returned values"
+        and isinstance(node, ast.Return)
+        and isinstance(node.value, ast.Tuple)
+    ):
+        elts = list(node.value.elts)
         elts[0], elts[1] = elts[1], elts[0]
         return ast.Return(ast.Tuple(elts, ast.Load()))
     raise ValueError(kind)
 
 
+def topic(path: str) -> str:
+    """A mutated module's topic, whose properties are ``checks/properties/test_<topic>.py``:
+    ``mechmodel/series.py`` and ``mechmodel/series/sums.py`` are both ``series``."""
+    return Path(Path(path).parts[1]).stem
+
+
 def enumerate_mutants(root: Path, package: str = "mechmodel") -> list[Mutant]:
     """Every mutation site of ``package``: all its modules for mechmodel, the judge's for
     reference."""
-    paths = sorted((root / package).rglob("*.py"))
+    paths = sorted((root / package).rglob("*.py"))  # a topic split into a subpackage too
     if package == "reference":
         paths = [root / "reference" / f"{name}.py" for name in JUDGE]
     out = []
@@ -171,7 +186,7 @@ def run_tests(root: Path, book: str, timeout: float, mutated: str | None = None)
         if mutated is None:
             tests += ["checks/properties", *JUDGE_TESTS]
         else:
-            properties = root / "checks" / "properties" / f"test_{Path(mutated).stem}.py"
+            properties = root / "checks" / "properties" / f"test_{topic(mutated)}.py"
             if properties.exists():
                 tests.append(str(properties.relative_to(root)))
     pytest = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
@@ -240,7 +255,7 @@ def main() -> None:
             sys.exit("the sanity mutant survived: are the tests importing the copy?")
         mutants = enumerate_mutants(root, args.package)
         if args.module:
-            mutants = [m for m in mutants if Path(m.path).stem == args.module]
+            mutants = [m for m in mutants if topic(m.path) == args.module]
         count = len(mutants) if args.count == 0 else min(args.count, len(mutants))
         sample = random.Random(args.seed).sample(mutants, count)
         if args.only:

@@ -18,7 +18,7 @@ import functools
 import os
 import sys
 import time
-from collections import Counter
+from collections import Counter, defaultdict
 from collections.abc import Callable, Generator
 from pathlib import Path
 from typing import Any
@@ -32,8 +32,8 @@ class PropertyClock:
     """A pytest plugin: per property, the call time and the time inside its bodies."""
 
     def __init__(self) -> None:
-        self.call: Counter[str] = Counter()
-        self.body: Counter[str] = Counter()
+        self.call: defaultdict[str, float] = defaultdict(float)  # seconds per property
+        self.body: defaultdict[str, float] = defaultdict(float)
         self.examples: Counter[str] = Counter()
 
     def _timed(self, name: str, inner: Callable[..., Any]) -> Callable[..., Any]:

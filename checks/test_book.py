@@ -52,7 +52,9 @@ def test_section_headings_are_on_their_lines(book: Book) -> None:
         assert section.heading in book.line(section.line), (section.line, section.heading)
     starts = {s.line for s in sections}
     assert all(c.start in starts for c in identity().chapters if c.key != "0")
-    assert identity().section_of(6562).heading == "Geometric properties of N-stage collisions"
+    found = identity().section_of(6562)
+    assert found is not None
+    assert found.heading == "Geometric properties of N-stage collisions"
 
 
 @pytest.mark.integrity

@@ -9,11 +9,18 @@ from __future__ import annotations
 
 import os
 import shutil
+from collections.abc import Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING, NoReturn
 
 import pytest
 
 from reference.evaluation import Evaluation
+
+if TYPE_CHECKING:
+    from playwright.sync_api import Page
+
+    BrowserPage = tuple[Page, list[str]]  # the page and the console errors it logged
 
 # under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
 # one group, run by one worker, which evaluates the catalog, scans the book and builds the
@@ -33,14 +40,16 @@ FLAGS = [
 ]
 
 
-def _unavailable(reason: str) -> None:
+def _unavailable(reason: str) -> NoReturn:
     if os.environ.get("CI", "").lower() == "true":
         pytest.fail(f"CI=true but {reason}")
     pytest.skip(reason)
 
 
 @pytest.fixture(scope="module")
-def browser_page(report_dir: Path, tmp_path_factory: pytest.TempPathFactory):
+def browser_page(
+    report_dir: Path, tmp_path_factory: pytest.TempPathFactory
+) -> Iterator[BrowserPage]:
     if not (Path(CHROMIUM).exists() or shutil.which("chromium")):
         _unavailable(f"no Chromium at {CHROMIUM}: apt-get install chromium")
     try:
@@ -66,19 +75,19 @@ def browser_page(report_dir: Path, tmp_path_factory: pytest.TempPathFactory):
         context.close()
 
 
-def _visible_rows(page) -> list[str]:
+def _visible_rows(page: Page) -> list[str]:
     return page.eval_on_selector_all(
         "tr.claim", "rows => rows.filter(r => !r.hidden).map(r => r.dataset.verdict)"
     )
 
 
-def test_no_console_errors(browser_page) -> None:
+def test_no_console_errors(browser_page: BrowserPage) -> None:
     page, errors = browser_page
     assert page.title().startswith("bangcheck")
     assert errors == []
 
 
-def test_the_verdict_filter_hides_rows(browser_page, evaluation: Evaluation) -> None:
+def test_the_verdict_filter_hides_rows(browser_page: BrowserPage, evaluation: Evaluation) -> None:
     page, _ = browser_page
     assert len(_visible_rows(page)) == len(evaluation)
     page.uncheck("input.verdict-filter[value=verified]")
@@ -90,7 +99,7 @@ def test_the_verdict_filter_hides_rows(browser_page, evaluation: Evaluation) -> 
     assert len(_visible_rows(page)) == len(evaluation)
 
 
-def test_the_search_finds_a_claim(browser_page) -> None:
+def test_the_search_finds_a_claim(browser_page: BrowserPage) -> None:
     page, _ = browser_page
     page.fill("#search", "tower-100-30-10.v3-intro")
     visible = page.eval_on_selector_all(
@@ -100,7 +109,7 @@ def test_the_search_finds_a_claim(browser_page) -> None:
     page.fill("#search", "")
 
 
-def test_the_search_reads_the_quote_and_hides_empty_chapters(browser_page) -> None:
+def test_the_search_reads_the_quote_and_hides_empty_chapters(browser_page: BrowserPage) -> None:
     """A phrase of the book's text finds its claim; chapters left empty are hidden, heading and
     all; a search that finds nothing says so."""
     page, _ = browser_page
@@ -122,7 +131,7 @@ def test_the_search_reads_the_quote_and_hides_empty_chapters(browser_page) -> No
 
 
 @pytest.mark.parametrize("width", [390, 1400])
-def test_the_page_fits_its_width_and_shows_no_python(browser_page, width: int) -> None:
+def test_the_page_fits_its_width_and_shows_no_python(browser_page: BrowserPage, width: int) -> None:
     """No horizontal overflow on a phone (390 px) or a wide screen (1,400 px): wide tables
     scroll inside the page; no Python repr ("None", "[1.0, 2.0]") in the text."""
     page, _ = browser_page
@@ -135,7 +144,9 @@ def test_the_page_fits_its_width_and_shows_no_python(browser_page, width: int) -
 
 
 @pytest.mark.parametrize("anchor", ["claim-ch08.tower-100-30-10.v3", "errata", "power"])
-def test_anchors_land_below_the_sticky_bar(browser_page, report_dir: Path, anchor: str) -> None:
+def test_anchors_land_below_the_sticky_bar(
+    browser_page: BrowserPage, report_dir: Path, anchor: str
+) -> None:
     page, _ = browser_page
     page.goto((report_dir / "index.html").as_uri() + "#" + anchor)
     page.wait_for_timeout(50)
@@ -148,7 +159,7 @@ def test_anchors_land_below_the_sticky_bar(browser_page, report_dir: Path, ancho
         assert target >= bottom - 1, (target, bottom)
 
 
-def test_no_accessibility_violations(browser_page, report_dir: Path) -> None:
+def test_no_accessibility_violations(browser_page: BrowserPage, report_dir: Path) -> None:
     """axe-core (the npm package's build, bundled by axe-playwright-python) finds no
     violation of WCAG 2 A/AA or best practice on the page: contrast, landmarks, names."""
     try:
@@ -162,7 +173,7 @@ def test_no_accessibility_violations(browser_page, report_dir: Path) -> None:
 
 
 @pytest.mark.parametrize("width", [390, 1400])
-def test_screenshot(browser_page, report_dir: Path, width: int) -> None:
+def test_screenshot(browser_page: BrowserPage, report_dir: Path, width: int) -> None:
     page, _ = browser_page
     page.set_viewport_size({"width": width, "height": 900})
     path = report_dir / f"screenshot-{width}.png"

@@ -69,7 +69,7 @@ def test_printed_precision_comes_from_its_digits(
 )
 def test_exact_forms(printed: str, value: Fraction) -> None:
     p = parse_number(printed)
-    assert (p.value, p.exact, p.half_width) == (value, True, 0)
+    assert (p.value, p.exact, p.half_width) == (value, True, Fraction(0))
 
 
 @pytest.mark.parametrize(

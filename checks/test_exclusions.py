@@ -102,8 +102,8 @@ def test_a_figure_number_after_a_line_ending_in_fig(book: Book) -> None:
     token = tokenize_line(book.line(1385), 1385)[0]
     assert token.text == "1.4"
     assert excluded_by(rule_spans(book.lines, 1385), token.start, token.end) == "ref-figure"
-    token = tokenize_line(book.line(1386), 1386)
-    assert all(excluded_by(rule_spans(book.lines, 1386), t.start, t.end) is None for t in token)
+    tokens = tokenize_line(book.line(1386), 1386)
+    assert all(excluded_by(rule_spans(book.lines, 1386), t.start, t.end) is None for t in tokens)
 
 
 @pytest.mark.integrity

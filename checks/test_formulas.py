@@ -7,7 +7,7 @@ import math
 from pathlib import Path
 
 import pytest
-import sympy
+import sympy  # type: ignore[import-untyped]  # sympy ships no type information (no py.typed)
 
 from reference.book import Book
 from reference.formulas import (

@@ -28,7 +28,7 @@ def test_the_settings_of_a_property_are_read() -> None:
     assert found is not None
     assert found.max_examples == 7
     assert settings_of(plain) is None
-    assert settings_of(None) is None  # type: ignore[arg-type]
+    assert settings_of(None) is None
 
 
 def test_the_run_statistics_of_a_property_are_collected() -> None:

@@ -33,7 +33,11 @@ def literals(source: str) -> list[tuple[int, Fraction, str]]:
     lines = source.splitlines()
     out = []
     for node in ast.walk(ast.parse(source)):
-        if isinstance(node, ast.Constant) and type(node.value) in (int, float):
+        if (
+            isinstance(node, ast.Constant)
+            and isinstance(node.value, int | float)
+            and not isinstance(node.value, bool)
+        ):
             if node.end_lineno == node.lineno and node.end_col_offset is not None:
                 raw = lines[node.lineno - 1].encode()[node.col_offset : node.end_col_offset]
                 text = raw.decode()

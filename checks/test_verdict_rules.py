@@ -119,7 +119,8 @@ def test_a_printed_intermediate_is_referenced(evaluation: Evaluation) -> None:
     assert mph.interval == pytest.approx([23.5 / 0.44704, 24.5 / 0.44704])
     assert verdict_of(evaluation, mph.id, "56") == "erratum"
     period = evaluation.by_id()["ch09.tunnel.period"]
-    assert (period.verdict, period.interval) == ("verified", pytest.approx([83.0, 85.0]))
+    assert period.verdict == "verified"
+    assert period.interval == pytest.approx([83.0, 85.0])
 
 
 def test_no_claim_is_rounding_without_a_reason_it_declares_or_an_interval(

@@ -121,7 +121,9 @@ def assumed_args(
     return args, inputs
 
 
-def replace_input(args: dict[str, Any], path: tuple[str | int, ...], value: Any) -> dict[str, Any]:
+def replace_input(
+    args: dict[str, Any], path: tuple[str | int, ...], value: object
+) -> dict[str, Any]:
     """A copy of ``args`` with the value at ``path`` replaced."""
     out = {k: list(v) if isinstance(v, list) else v for k, v in args.items()}
     target: Any = out
@@ -176,7 +178,9 @@ def centre(args: dict[str, Any], rounded: list[Input]) -> dict[str, Any]:
     return out
 
 
-def _freeze(value: Any) -> Any:
+def _freeze(value: object) -> object:
+    """A hashable form of a model argument (lists and dicts as tuples, each value with its
+    type's name: 1 and 1.0 are different calls)."""
     if isinstance(value, list | tuple):
         return tuple(_freeze(v) for v in value)
     if isinstance(value, dict):

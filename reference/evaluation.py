@@ -2,7 +2,11 @@
 
 ``evaluate()`` is the Python entry point (design section 4): it reads and validates the catalog
 against the book, calls each claim's model once (cached on model and arguments), and returns an
-``Evaluation`` of ``EvaluatedClaim`` dataclasses; ``.to_frame()`` gives a pandas DataFrame.
+``Evaluation`` of ``EvaluatedClaim`` dataclasses (``reference.evaluated``); ``.to_frame()`` gives a
+pandas DataFrame. Here are the judging and the assembling: which inputs are exact (design 3a),
+each claim's judging context (a model value, a constant, a restated claim's value converted),
+formula claims (design 2a), the verdict, and the ``EvaluatedClaim`` with its diagnosis, section
+and error class; ``reference.modelling`` calls the models.
 """
 
 from __future__ import annotations
@@ -10,195 +14,39 @@ from __future__ import annotations
 import dataclasses
 import math
 import sys
-from collections import Counter
-from collections.abc import Callable, Iterator, Mapping, Sequence
-from dataclasses import dataclass, field, fields
+from collections.abc import Sequence
+from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
-from functools import cached_property
-from typing import TYPE_CHECKING, Any
 
-import sympy
-
-from mechmodel.typing import Estimate, is_monotonic
 from reference.book import Book, book_path, chapter_keys, load_book
-from reference.calls import (
-    MAX_ROUNDED_INPUTS,
-    ModelCache,
-    ModelCallError,
-    assumed_args,
-    box_points,
-    build_args,
-    centre,
-    corners,
-    grid_steps,
-)
+from reference.calls import ModelCache, ModelCallError
 from reference.catalog import Catalog
 from reference.compare import Context, Edition, Judgement, Verdict, exact, inside, judge
 from reference.diagnose import diagnose
-from reference.errata import Error, errors
+from reference.errata import errors
+from reference.evaluated import EvaluatedClaim, Evaluation
 from reference.formulas import FormulaError, compare, generic_points, make_symbol, parse_formula
-from reference.models import PickError, follow, resolve
+from reference.modelling import ModelCalls, Modelled, ModelValue, real_part
 from reference.numbers import EXACT_ULPS, Printed, parse_number, significant_digits
-from reference.power import (
-    Outcome,
-    PowerReport,
-    catches,
-    judge_misprints,
-    measured,
-    power_report,
-)
+from reference.power import Outcome, catches, judge_misprints, measured
 from reference.schema import Assumption, Claim
 from reference.tables import constants, unit_factor
 from reference.validate import checked_catalog, claim_refs, parsed
 
-if TYPE_CHECKING:
-    import pandas as pd
+__all__ = [
+    "WIDE_INTERVAL",
+    "EvaluatedClaim",
+    "Evaluation",
+    "FormulaResult",
+    "evaluate",
+    "evaluate_catalog",
+]
 
 WIDE_INTERVAL = 10  # an interval wider than this many h is flagged in the report
 
 
-@dataclass(frozen=True)
-class EvaluatedClaim:
-    """A claim with its evaluation: the fields of ``claims --json`` (design section 4)."""
-
-    id: str
-    chapter: str
-    file: str
-    line: int
-    line_end: int | None
-    occurrence: int | None
-    quote: str
-    printed: str | None
-    means: str | None
-    garble: str | None
-    value: float | None
-    model_value: float | list[float] | None
-    interval: list[float] | None
-    interval_note: str | None
-    interval_wide: bool
-    tolerance: float | None
-    rounding_reason: str | None
-    relation: str
-    unit: str
-    kind: str
-    verdict: Verdict
-    expect: str
-    correct: str | None
-    correct_agrees: bool | None
-    diagnosis: dict[str, str | None] | None
-    quantity: str
-    model: str | None
-    args: dict[str, Any]
-    pick: str
-    model_error: float | None
-    assumptions: dict[str, Any]
-    rounded_assumptions: list[str]
-    precision_reason: str | None
-    rel_tol: float | None
-    sigfigs: int | None
-    rounding: str | None
-    exact: bool
-    monotonic: bool | None
-    restates: str | None
-    figure: str | None
-    equation: str | None
-    note: str | None
-    expression: str | None
-    model_expression: str | None
-    symbols: dict[str, Any] | None
-    tokens: list[dict[str, Any]] | None
-    edition: str | None
-    matched_edition: str | None
-    same_error: str | None
-    summary: str | None
-    error_class: str | None
-    section: str | None
-    catches: list[str] | None
-    reads: str | None = None
-
-    @property
-    def passed(self) -> bool:
-        """The claim test's condition: verdict equals expect, an erratum's model agrees with its
-        ``correct``, and a dated claim matched the edition it names."""
-        if self.verdict != self.expect:
-            return False
-        if self.expect == "dated":
-            return self.matched_edition is not None and self.matched_edition == self.edition
-        return self.expect != "erratum" or self.correct_agrees is True
-
-    def to_json(self) -> dict[str, Any]:
-        """The claim as a JSON object (missing values null, never NaN); the error class is
-        ``class`` there."""
-        out = {f.name: getattr(self, f.name) for f in fields(self) if f.name != "file"}
-        out["class"] = out.pop("error_class")
-        return out
-
-
-@dataclass(frozen=True)
-class Evaluation(Sequence[EvaluatedClaim]):
-    """The evaluated claims of a run, in catalog order; ``contexts`` holds each judged claim's
-    ``Context`` (what ``reference.power`` judges misprints in), ``centres`` the model's value
-    at the centre of each box of rounded inputs, and ``misprints`` each measured claim's
-    misprints as judged (design 3a)."""
-
-    claims: tuple[EvaluatedClaim, ...]
-    catalog: Catalog = field(repr=False)
-    book: Book = field(repr=False)
-    model_calls: int
-    contexts: Mapping[str, Context] = field(default_factory=dict, repr=False)
-    centres: Mapping[str, Fraction] = field(default_factory=dict, repr=False)
-    misprints: Mapping[str, list[Outcome]] = field(default_factory=dict, repr=False)
-
-    def __len__(self) -> int:
-        return len(self.claims)
-
-    def __getitem__(self, index):
-        return self.claims[index]
-
-    def __iter__(self) -> Iterator[EvaluatedClaim]:
-        return iter(self.claims)
-
-    @cached_property
-    def index(self) -> dict[str, EvaluatedClaim]:
-        """The claims by id."""
-        return {c.id: c for c in self.claims}
-
-    def by_id(self) -> dict[str, EvaluatedClaim]:
-        """The claims by id (a shared dict: do not modify)."""
-        return self.index
-
-    def verdict_counts(self) -> Counter[str]:
-        return Counter(c.verdict for c in self.claims)
-
-    def errors(self) -> list[Error]:
-        """The errors of the book among the evaluated claims (one per error, however many
-        claims print it), in book order."""
-        by_id = self.catalog.by_id()
-        return errors(
-            ((by_id[c.id], c.chapter) for c in self.claims if c.verdict == "erratum"),
-            by_id,
-            self.book.lines,
-            self.book.identity,
-        )
-
-    def power(self) -> PowerReport:
-        """The detection power of the evaluated claims (design 3a), from the misprints judged
-        during the evaluation."""
-        return power_report(
-            (c.id, c.chapter, c.line, c.means or c.printed or "", self.misprints[c.id])
-            for c in self.claims
-            if c.id in self.misprints
-        )
-
-    def to_frame(self) -> pd.DataFrame:
-        """The claims as a pandas DataFrame, one row per claim (pandas is imported only here)."""
-        import pandas as pd
-
-        return pd.DataFrame([c.to_json() for c in self.claims])
-
-
-def _as_json_number(value: Any) -> float | list[float] | None:
+def _as_json_number(value: ModelValue | None) -> float | list[float] | None:
     if value is None:
         return None
     if isinstance(value, complex):
@@ -228,26 +76,14 @@ class FormulaResult:
     correct_agrees: bool | None
 
 
-@dataclass(frozen=True)
-class _Modelled:
-    """What the model said of a claim, in the printed unit: its value, the interval over the
-    box of rounded inputs (or why there is none), its declared error, and its value at the
-    box's centre."""
-
-    value: Any = None
-    interval: tuple[Fraction, Fraction] | None = None
-    interval_note: str | None = None
-    error: Fraction | None = None
-    centre: Fraction | None = None
-
-
 class _Evaluator:
     def __init__(self, catalog: Catalog) -> None:
         self.claims = catalog.by_id()
         self.files = catalog.file_of()
         self.cache = ModelCache()
+        self.models = ModelCalls(self.cache, self.lookup, self.is_rounded_input)
         self.done: dict[str, EvaluatedClaim] = {}
-        self.modelled: dict[str, _Modelled] = {}
+        self.modelled: dict[str, Modelled] = {}
         self.contexts: dict[str, Context] = {}
         self.exact_inputs: dict[str, bool] = {}
 
@@ -299,87 +135,28 @@ class _Evaluator:
         if modelled.interval is not None or modelled.error:
             return False
         value = modelled.value
-        if isinstance(value, complex):  # never with a zero imaginary part: _convert made it real
+        if isinstance(value, complex):  # never with a zero imaginary part: made real when read
             return False
         stated = parsed(claim).value
         if isinstance(value, int | Fraction):
             return Fraction(value) == stated
         return abs(exact(value) - stated) <= Fraction(EXACT_ULPS * math.ulp(float(value) or 1e-300))
 
-    # -- model calls -----------------------------------------------------------------------
-    def call_model(self, claim: Claim) -> _Modelled:
-        """The model's value in the printed unit, its input interval (or why there is none),
-        its declared error and its value at the box's centre."""
-        assert claim.model is not None
-        args, inputs = build_args(claim.args, self.lookup, self.is_rounded_input)
-        assumed, assumed_inputs = assumed_args(claim.assumptions)
-        args.update(assumed)
-        value, error = self._value_at(claim, args)
-        rounded = [i for i in [*inputs, *assumed_inputs] if i.rounded]
-        if not rounded:
-            return _Modelled(value, None, None, error)
-        monotonic = claim.monotonic
-        if monotonic is None:
-            monotonic = is_monotonic(resolve(claim.model))
-        if monotonic:
-            if len(rounded) > MAX_ROUNDED_INPUTS:
-                note = f"{len(rounded)} rounded inputs: too many corners for an interval"
-                return _Modelled(value, None, note, error)
-            points = corners(args, rounded)
-        else:
-            steps = grid_steps(len(rounded))
-            if steps is None:
-                note = f"{len(rounded)} rounded inputs of a model not monotonic: no interval"
-                return _Modelled(value, None, note, error)
-            points = box_points(args, rounded, steps)
-        reals = [_real(self._value_at(claim, point)[0]) for point in points]
-        middle = _real(self._value_at(claim, centre(args, rounded))[0])
-        return _Modelled(value, (min(reals), max(reals)), None, error, middle)
-
-    def _value_at(self, claim: Claim, args: dict[str, Any]) -> tuple[Any, Fraction | None]:
-        """The model's picked value at ``args`` in the printed unit, and its declared error."""
-        assert claim.model is not None
-        raw = self.cache.picked(claim.id, claim.model, args, claim.pick)
-        error = None
-        if isinstance(raw, Estimate):
-            raw, error = raw.value, raw.error
-        factor = unit_factor(claim.unit)
-        converted = self._convert(claim, raw, factor)
-        return converted, None if error is None else exact(float(error) / factor)
-
-    @staticmethod
-    def _convert(claim: Claim, value: Any, factor: float) -> Any:
-        if isinstance(value, bool) or not isinstance(value, int | float | complex | Fraction):
-            try:
-                value = complex(value) if isinstance(value, complex) else float(value)
-            except (TypeError, ValueError) as err:
-                raise ModelCallError(
-                    claim.id,
-                    "pick",
-                    f"the model result is a {type(value).__name__}, not a "
-                    "number: pick a part of it",
-                ) from err
-        if isinstance(value, complex) and value.imag == 0:
-            value = value.real
-        if isinstance(value, float) and not math.isfinite(value):
-            raise ModelCallError(claim.id, "model", f"{claim.model} returned {value}")
-        if factor == 1:
-            return value
-        return value / factor
-
     # -- contexts --------------------------------------------------------------------------
     @staticmethod
-    def context(claim: Claim, modelled: _Modelled, scale: Fraction = Fraction(1)) -> Context:
+    def context(claim: Claim, modelled: Modelled, scale: Fraction = Fraction(1)) -> Context:
         """The claim's judging context from what the model said (``scale`` converts a restated
         claim's value to this claim's unit)."""
         value = modelled.value
+        assert value is not None  # a claim the model (or the claim it restates) gave a value
         imag = Fraction(0)
         if isinstance(value, complex):
             imag = exact(value.imag) * scale
             value = value.real
         interval = modelled.interval
         if interval is not None:
-            interval = tuple(sorted((interval[0] * scale, interval[1] * scale)))
+            low, high = sorted((interval[0] * scale, interval[1] * scale))
+            interval = (low, high)
         bounds = None
         if claim.bounds is not None:
             bounds = (parse_number(claim.bounds[0]), parse_number(claim.bounds[1]))
@@ -430,7 +207,7 @@ class _Evaluator:
         points = generic_points(symbols, domains)
         try:
             book = parse_formula(claim.expression, symbols)
-            model, shown = self.formula_model(claim, symbols)
+            model, shown = self.models.formula_model(claim, symbols)
             comparison = compare(book, model, points)
             agrees = None
             if claim.correct is not None:
@@ -440,35 +217,6 @@ class _Evaluator:
         verdict: Verdict = "verified" if comparison.agrees else "erratum"
         return FormulaResult(Judgement(verdict, None, None), shown, agrees)
 
-    def formula_model(
-        self, claim: Claim, symbols: dict[str, sympy.Symbol]
-    ) -> tuple[sympy.Expr | Callable[[Mapping[sympy.Symbol, float]], complex], str | None]:
-        """The correct formula: the model called with sympy symbols, if it returns an
-        expression; else a function of a point that calls it with numbers."""
-        assert claim.model is not None
-        func = resolve(claim.model)
-
-        def call(values: Mapping[str, Any]) -> Any:
-            args, _ = build_args(claim.args, self.lookup, self.is_rounded_input, symbols=values)
-            return follow(func(**args), claim.pick)
-
-        try:
-            result = call(symbols)
-        except (TypeError, ValueError, ArithmeticError, AttributeError, PickError):
-            result = None
-        if isinstance(result, sympy.Basic | int | Fraction):
-            expr = sympy.sympify(result)
-            return expr, str(expr)
-
-        def at(point: Mapping[sympy.Symbol, float]) -> complex:
-            values = {name: point[sym] for name, sym in symbols.items()}
-            try:
-                return complex(call(values))
-            except (TypeError, ValueError, ArithmeticError) as err:
-                raise ModelCallError(claim.id, "model", f"{claim.model} raised {err}") from err
-
-        return at, None
-
     # -- verdicts ------------------------------------------------------------------------
     def evaluate(self, ident: str) -> EvaluatedClaim:
         if ident in self.done:
@@ -476,11 +224,11 @@ class _Evaluator:
         claim = self.claims[ident]
         root = self.root(claim)
         printed = parsed(claim) if claim.kind != "formula" else None
-        modelled = _Modelled()
+        modelled = Modelled()
         auto: str | None = None
         ctx: Context | None = None
         formula: FormulaResult | None = None
-        if claim.kind == "formula":
+        if printed is None:  # a formula claim
             formula = self.judge_formula(claim)
             judgement = formula.judgement
         elif root.kind == "given":
@@ -488,7 +236,7 @@ class _Evaluator:
         elif root.kind == "constant":
             assert root.constant is not None
             ctx = self.constant_context(claim, printed, root.constant)
-            modelled = _Modelled(float(ctx.model))
+            modelled = Modelled(float(ctx.model))
             judgement = judge(printed, ctx)
             if judgement.verdict == "dated":
                 auto = f"dated: matches {judgement.edition}"
@@ -504,12 +252,12 @@ class _Evaluator:
                 ctx = self.context(claim, source, scale)
                 value = source.value * float(scale) if scale != 1 else source.value
                 centre = None if source.centre is None else source.centre * scale
-                modelled = _Modelled(value, ctx.interval, source.interval_note, ctx.error, centre)
+                modelled = Modelled(value, ctx.interval, source.interval_note, ctx.error, centre)
                 judgement = judge(printed, ctx)
         elif claim.model is None:
             judgement = Judgement("unmodeled", None, None)
         else:
-            modelled = self.call_model(claim)
+            modelled = self.models.call_model(claim)
             ctx = self.context(claim, modelled)
             judgement = judge(printed, ctx)
         self.modelled[ident] = modelled
@@ -523,7 +271,7 @@ class _Evaluator:
         claim: Claim,
         printed: Printed | None,
         judgement: Judgement,
-        modelled: _Modelled,
+        modelled: Modelled,
         auto: str | None,
         formula: FormulaResult | None = None,
     ) -> EvaluatedClaim:
@@ -538,7 +286,7 @@ class _Evaluator:
             if printed is not None and _finer(claim.correct, correct, printed):
                 # more decimals and more figures than printed: the exact value (design 2a)
                 tolerance = Fraction(EXACT_ULPS * math.ulp(float(correct.value) or 1e-300))
-            correct_agrees = inside(abs(_real(model_value) - correct.value), tolerance)
+            correct_agrees = inside(abs(real_part(model_value) - correct.value), tolerance)
         diagnosis = None
         if judgement.verdict in ("erratum", "dated") or claim.expect in ("erratum", "dated"):
             if (
@@ -571,7 +319,7 @@ class _Evaluator:
             printed=claim.printed,
             means=claim.means,
             garble=claim.garble,
-            value=None if printed is None else _as_json_number(printed.value),
+            value=None if printed is None else float(printed.value),
             model_value=_as_json_number(model_value),
             interval=[float(interval[0]), float(interval[1])] if interval else None,
             interval_note=modelled.interval_note,
@@ -630,10 +378,6 @@ def _finer(text: str, correct: Printed, printed: Printed) -> bool:
         return False
     figures = len(significant_digits(text)) > len(significant_digits(printed.text))
     return correct.quantum < printed.quantum and figures
-
-
-def _real(value: Any) -> Fraction:
-    return exact(value.real if isinstance(value, complex) else value)
 
 
 def _located(claims: list[EvaluatedClaim], catalog: Catalog, book: Book) -> list[EvaluatedClaim]:

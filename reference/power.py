@@ -293,6 +293,7 @@ def _reason(claim: Claim, printed: Printed, ctx: Context, judgement: Judgement) 
 def judge_misprints(claim: Claim, ctx: Context) -> list[Outcome]:
     """Every misprint of a measured claim, judged in its context with its declared precision."""
     stated = claim.means or claim.printed
+    assert stated is not None  # a measured claim prints its number
     out = []
     for m, printed in _read_misprints(stated, claim.sigfigs, claim.exact):
         judgement = judge(printed, ctx)

@@ -72,7 +72,7 @@ def restatement_problem(excluded: Excluded, claim: Claim) -> str | None:
             return f"the token is no number: {err}"
         return _disagreement(token, scale, stated, "the token")
     piece = significant_digits(excluded.token or "")
-    wholes = [excluded.means] if excluded.means else [claim.printed, claim.means or ""]
+    wholes = [excluded.means] if excluded.means else [claim.printed or "", claim.means or ""]
     if not any(piece in _digits(whole) for whole in wholes):
         return f"its digits {piece!r} are not in {' or '.join(repr(w) for w in wholes if w)}"
     if excluded.means:

@@ -87,7 +87,7 @@ class SymbolRef(_Strict):
 
 ArgValue = TypeAliasType(
     "ArgValue",
-    "int | float | str | ClaimRef | SymbolRef | list[ArgValue]",  # type: ignore[misc]
+    "int | float | str | ClaimRef | SymbolRef | list[ArgValue]",
 )
 
 

@@ -91,6 +91,7 @@ def _build(sending: Connection, evaluation: Evaluation, scan: ScanResult, catalo
     from reports.page import build_report
 
     os.nice(10)  # should anything else want the CPU, the caller's tests come first
+    message: tuple[str, dict[str, str] | str]
     try:
         message = ("ok", build_report(evaluation, scan, catalog, None, figure_workers=1))
     except Exception:  # any failure goes back to the caller, whose test reports it

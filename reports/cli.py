@@ -99,12 +99,12 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _fmt(value: Any) -> str:
+def _fmt(value: float | list[float] | None) -> str:
     if value is None:
         return "-"
     if isinstance(value, list):
         return "[" + ", ".join(_fmt(v) for v in value) + "]"
-    return f"{value:.10g}" if isinstance(value, float) else str(value)
+    return f"{value:.10g}"
 
 
 def _failing(evaluation: Evaluation, strict: bool) -> list[str]:

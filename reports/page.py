@@ -182,7 +182,7 @@ def render_page(
         rows = [claim_row(c) for c in evaluation if c.chapter == key]
         if rows:
             chapters.append({"key": key, "title": title, "rows": rows})
-    per_chapter = {
+    per_chapter: dict[str, Counter[str]] = {
         key: Counter(c.verdict for c in evaluation if c.chapter == key)
         for key in titles
         if any(c.chapter == key for c in evaluation)

@@ -25,7 +25,7 @@ CONTEXT = 2  # non-blank book lines shown before and after an erratum's line
 _SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
 
-def number(value: Any) -> str:
+def number(value: float | list[float] | None) -> str:
     """A model value or bound as the page prints it: 10 significant figures, a complex value
     as a + bi, nothing for a missing one."""
     if value is None:
@@ -34,9 +34,7 @@ def number(value: Any) -> str:
         re_part, im_part = value
         sign = "−" if im_part < 0 else "+"
         return f"{re_part:.10g} {sign} {abs(im_part):.10g}i"
-    if isinstance(value, float):
-        return f"{value:.10g}"
-    return str(value)
+    return f"{value:.10g}"
 
 
 def means_shown(text: str) -> str:
@@ -71,7 +69,7 @@ def tolerance_shown(claim: EvaluatedClaim) -> str:
 
 
 def verdict_shown(claim: EvaluatedClaim) -> str:
-    text = claim.verdict
+    text: str = claim.verdict
     if claim.rounding_reason:
         text += f" ({claim.rounding_reason})"
     if claim.matched_edition:
@@ -160,7 +158,8 @@ def _call(claim: EvaluatedClaim, values: dict[str, EvaluatedClaim]) -> str:
     return f"{call}.{claim.pick}" if claim.pick else call
 
 
-def _arg(value: Any, values: dict[str, EvaluatedClaim]) -> str:
+def _arg(value: object, values: dict[str, EvaluatedClaim]) -> str:
+    """An argument as the claim's JSON has it: a number, a string, a list, a claim or a symbol."""
     if isinstance(value, dict) and set(value) == {"claim"}:
         ref = values.get(value["claim"])
         return f"{value['claim']} = {ref.printed if ref and ref.printed else '?'}"

@@ -28,8 +28,9 @@ class HypothesisAPIChangedError(RuntimeError):
     """A Hypothesis internal the suite relies on is not where it was."""
 
 
-def settings_of(test: Callable[..., Any]) -> settings | None:
-    """The settings of a ``@given`` test; None for a function Hypothesis did not wrap."""
+def settings_of(test: object) -> settings | None:
+    """The settings of a ``@given`` test; None for anything else (a function Hypothesis did not
+    wrap, or an item's missing function)."""
     if not getattr(test, "is_hypothesis_test", False):
         return None
     found = getattr(test, _SETTINGS_ATTRIBUTE, None)

@@ -106,7 +106,7 @@ class InvariantRecorder:
         if report.when != "call":
             return
         for key, value in report.user_properties:
-            if key == _KEY:
+            if key == _KEY and isinstance(value, dict):  # the record written above
                 self.records.append({**value, "outcome": report.outcome})
 
     def pytest_sessionfinish(self, session: pytest.Session) -> None:

@@ -21,11 +21,12 @@ _ERRORS_KEY = "bangcheck_errors"
 
 
 def pytest_collection_finish(session: pytest.Session) -> None:
-    session.config.stash[keys.SELECTED] = {
-        item.callspec.params["claim_id"]
+    ids = (
+        item.callspec.params.get("claim_id")
         for item in session.items
-        if "claim_id" in getattr(getattr(item, "callspec", None), "params", {})
-    }
+        if isinstance(item, pytest.Function) and hasattr(item, "callspec")  # parametrized only
+    )
+    session.config.stash[keys.SELECTED] = {i for i in ids if isinstance(i, str)}
 
 
 def _selected_counts(config: pytest.Config) -> tuple[Counter[str], int] | None:
@@ -37,7 +38,7 @@ def _selected_counts(config: pytest.Config) -> tuple[Counter[str], int] | None:
     evaluation = evaluation_of(config)
     if evaluation is None:
         return None
-    counts = Counter(c.verdict for c in evaluation if c.id in selected)
+    counts: Counter[str] = Counter(c.verdict for c in evaluation if c.id in selected)
     errors = [e for e in evaluation.errors() if any(c.id in selected for c in e.claims)]
     return counts, len(errors)
 
@@ -54,7 +55,7 @@ def pytest_sessionfinish(session: pytest.Session) -> None:
 
 
 @pytest.hookimpl(optionalhook=True)
-def pytest_testnodedown(node: Any, error: object) -> None:
+def pytest_testnodedown(node: Any, error: object) -> None:  # node: xdist's WorkerController
     """The controller keeps the first verdict counts a worker sends (all workers evaluate the
     same catalog against the same book), so it need not evaluate the catalog once more."""
     del error
@@ -67,7 +68,7 @@ def pytest_testnodedown(node: Any, error: object) -> None:
 
 @pytest.hookimpl(wrapper=True, tryfirst=True)
 def pytest_terminal_summary(
-    terminalreporter: Any, exitstatus: int, config: pytest.Config
+    terminalreporter: pytest.TerminalReporter, exitstatus: int, config: pytest.Config
 ) -> Generator[None]:
     result = yield
     counts = config.stash.get(keys.WORKER_VERDICTS, None)
