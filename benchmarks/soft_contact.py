@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import statistics
 import time
+from fractions import Fraction
 
 from mechmodel.collisions import collide
 from mechmodel.contact import INTEGRATORS, soft_collision
@@ -41,7 +42,7 @@ def main() -> None:
         f"{'vs default':>10}"
     )
     for name, masses, positions, velocities, power, floor in CASES:
-        exact = None if floor or len(masses) != 2 else collide(*masses, *velocities).after
+        exact = None if floor or len(masses) != 2 else _floats(collide(*masses, *velocities).after)
         reference = None
         for method in INTEGRATORS:
             times = []
@@ -66,8 +67,18 @@ def main() -> None:
             )
 
 
-def _largest_error(finals: list[float], exact: tuple[float, float]) -> float:
-    return max(abs(a - float(b)) for a, b in zip(finals, exact, strict=True))
+def _floats(values: tuple[object, ...]) -> list[float]:
+    """The exact map's velocities (Fractions: the masses are ints) as floats."""
+    out = []
+    for v in values:
+        if not isinstance(v, int | float | Fraction):
+            raise TypeError(f"not a real number: {v!r}")
+        out.append(float(v))
+    return out
+
+
+def _largest_error(finals: list[float], exact: list[float]) -> float:
+    return max(abs(a - b) for a, b in zip(finals, exact, strict=True))
 
 
 if __name__ == "__main__":

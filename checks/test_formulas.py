@@ -7,7 +7,7 @@ import math
 from pathlib import Path
 
 import pytest
-import sympy  # type: ignore[import-untyped]  # sympy ships no type information (no py.typed)
+import sympy
 
 from reference.book import Book
 from reference.formulas import (

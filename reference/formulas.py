@@ -25,7 +25,7 @@ from fractions import Fraction
 from functools import cache
 from typing import Any
 
-import sympy  # type: ignore[import-untyped]  # sympy ships no type information (no py.typed)
+import sympy
 
 FUNCTIONS: dict[str, Callable[..., Any]] = {
     "sqrt": sympy.sqrt,

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any
 
-import sympy  # type: ignore[import-untyped]  # sympy ships no type information (no py.typed)
+import sympy
 
 from mechmodel.typing import Estimate, is_monotonic
 from reference.calls import (

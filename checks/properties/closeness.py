@@ -1,4 +1,4 @@
-"""One closeness check for the property tests: ``assert_close``.
+"""One closeness check for the property tests: ``assert_close``; and ``real``, ``reals``.
 
 The tolerance is ``abs + rel * scale``. ``scale`` is the size the relative tolerance is taken
 of: by default the magnitudes involved, |actual| + |expected| (design section 5); a test passes
@@ -10,15 +10,32 @@ or the whole tolerance with ``rel=0``.
 Numbers of any kind (int, Fraction, float, complex, mpmath) are compared by |actual -
 expected|; sequences of equal shape (vectors, matrices) entry by entry, each against the same
 tolerance. A failure names both values, their difference and the tolerance.
+
+``real`` and ``reals`` assert that a model typed ``Symbolic`` (it also takes sympy symbols)
+gave real numbers when called with real numbers, and say so to the type checker.
 """
 
 from __future__ import annotations
 
 import builtins
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
+from fractions import Fraction
 from typing import Any
 
+from mechmodel.typing import Real
+
 REL = 1e-12  # design section 5: about 1e-12 of the magnitudes involved
+
+
+def real(value: object) -> Real:
+    """``value``, asserted a real number (int, float or Fraction), not a sympy expression."""
+    assert isinstance(value, int | float | Fraction), f"not a real number: {value!r}"
+    return value
+
+
+def reals(values: Iterable[object]) -> tuple[Real, ...]:
+    """The values, each asserted a real number (``real``)."""
+    return tuple(real(v) for v in values)
 
 
 def _entries(value: Any, where: str = "") -> Iterator[tuple[str, Any]]:

@@ -111,7 +111,7 @@ def test_laurent_prints_the_polynomial_it_holds(p: Laurent) -> None:
     """The printed form c*x^i*y^j + ... of a Laurent polynomial, read back by sympy, is the
     polynomial itself (x^1 printed as x): the coefficients and exponents the chapter 12
     derivations report can be read off their printout."""
-    import sympy  # type: ignore[import-untyped]  # sympy ships no type information
+    import sympy
 
     real = {k: c for k, c in p.terms.items() if isinstance(c, Fraction)}
     assert len(real) == len(p.terms)  # the polynomials printed here have real coefficients

@@ -437,6 +437,7 @@ def test_a_boosted_and_rescaled_collision_is_the_same_collision(
     assert shifted.after == tuple(scale * (v + boost) for v in hit.after)
     total = 2 * kinetic_energy((m1, m2), shifted.before)
     gained = m2 * (shifted.after[1] ** 2 - shifted.before[1] ** 2)
+    assert isinstance(gained, Fraction)  # exact: Fraction inputs
     assert shifted.energy_transfer == abs(gained) / total
     unscaled = galileo_shifted_collision(m1, m2, v1, v2, boost)
     assert unscaled.energy_transfer == shifted.energy_transfer

@@ -238,6 +238,7 @@ def test_lowest_retention_is_the_square_of_the_common_velocity(m1: Fraction, m2:
     exactly with Fractions, between 0 and 1; it is the square of the radius ratio of the two
     energy ellipses along either axis ((8.6), Figs. 8.3-8.4)."""
     ratio = towers.min_retention_velocity_ratio(m1, m2)
+    assert isinstance(ratio, Fraction)  # exact: Fraction masses
     retention = towers.min_energy_retention(m1, m2)
     assert retention == ratio * ratio
     assert 0 <= retention <= 1

@@ -17,8 +17,9 @@ import os
 import pkgutil
 import re
 import signal
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
@@ -59,6 +60,19 @@ def value_of(claims: dict[str, EvaluatedClaim], ident: str) -> float:
     if value is None:
         raise ValueError(f"claim {ident} has no numeric value to draw with")
     return value
+
+
+def as_float(value: object) -> float:
+    """A model's value as matplotlib takes it: a real number (int, Fraction, float) as a float.
+    A model typed ``Symbolic`` gives real numbers for real inputs; anything else is a bug."""
+    if not isinstance(value, int | float | Fraction):
+        raise TypeError(f"not a real number to draw: {value!r}")
+    return float(value)
+
+
+def as_floats(values: Iterable[object]) -> list[float]:
+    """Each value ``as_float``."""
+    return [as_float(v) for v in values]
 
 
 def figure(key: str, book_figure: str, caption: str, claims: tuple[str, ...]) -> Callable:

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING
 
 from mechmodel.collisions import collide
 from mechmodel.ellipse import ellipse_outline, ellipse_radii, kinetic_energy
-from reports.figures import figure, value_of
+from reports.figures import as_float, figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -47,7 +47,7 @@ def _energy_ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         (elastic.after, "FIN (elastic)"),
         (sticking.after, "COM (inelastic)"),
     ):
-        ax.plot([x], [y], "o")
+        ax.plot([as_float(x)], [as_float(y)], "o")
         ax.annotate(f"{name} ({x:g}, {y:g})", (x, y), textcoords="offset points", xytext=(5, 5))
     ax.set_xlabel(r"velocity $V_{\rm SUV}$ (mph)")
     ax.set_ylabel(r"velocity $V_{\rm VW}$ (mph)")

@@ -20,7 +20,7 @@ from mechmodel.operators import (
     sigma,
 )
 from mechmodel.planar import apply, matrix_product
-from reports.figures import figure, value_of
+from reports.figures import as_floats, figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -246,7 +246,8 @@ def _bang_triangle(ax: Axes, m1: float, m2: float) -> None:
 def _flag(ax: Axes, matrix: Matrix, colour: str, label: str, style: str = "-") -> None:
     points = [apply(matrix, p) for p in (*FLAG, FLAG[0])]
     ax.fill([p[0] for p in points], [p[1] for p in points], color=colour, alpha=0.35)
-    ax.plot([p[0] for p in points], [p[1] for p in points], style, color=colour, label=label)
+    xs, ys = as_floats(p[0] for p in points), as_floats(p[1] for p in points)
+    ax.plot(xs, ys, style, color=colour, label=label)
 
 
 def _mirror(ax: Axes, angle: float, colour: str, label: str | None = None) -> None:

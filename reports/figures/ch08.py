@@ -6,7 +6,7 @@ import itertools
 from typing import TYPE_CHECKING
 
 from mechmodel.towers import geometric_tower, independent_tower, pellet_rocket, zero_gap_tower
-from reports.figures import figure, value_of
+from reports.figures import as_floats, figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -33,7 +33,7 @@ def _tower(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     for k, bang in enumerate(tower.bangs):
         ax = fig.add_subplot(1, len(tower.bangs), k + 1)
         (a0, b0), (a1, b1) = bang.before, bang.after
-        ax.plot([a0, a1], [b0, b1], "-o")
+        ax.plot(as_floats([a0, a1]), as_floats([b0, b1]), "-o")
         ax.annotate("START", (a0, b0), textcoords="offset points", xytext=(-8, -6), ha="right")
         ax.annotate(
             f"END ({a1:.3g}, {b1:.3g})", (a1, b1), textcoords="offset points", xytext=(8, -4)
@@ -125,13 +125,13 @@ def _four_ball_towers(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
         rising = [tower.rebound, *(bang.v2 for bang in tower.bangs)]
         ax.plot(
             range(1, n + 1),
-            rising,
+            as_floats(rising),
             f"-{marker}",
             label=f"({'ab'[k]}) ratio {ratio:g}: $V_{n}$ = {rising[-1]:.3g}",
         )
         ax.plot(
             range(1, n + 1),
-            tower.velocities,
+            as_floats(tower.velocities),
             f":{marker}",
             color="0.6",
             label="final velocities" if k == 1 else None,
@@ -168,8 +168,8 @@ def _pellet_rocket(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
     fig.set_size_inches(7.6, 4.4)
     fig.set_layout_engine("constrained")
     ax = fig.add_subplot()
-    ax.step(blasts, rocket.velocities, where="post", label="rocket $V(b)$")
-    ax.plot(blasts, rocket.pellet_velocities, "o", label="pellet $b$, final")
+    ax.step(blasts, as_floats(rocket.velocities), where="post", label="rocket $V(b)$")
+    ax.plot(blasts, as_floats(rocket.pellet_velocities), "o", label="pellet $b$, final")
     ax.axhline(0, color="k", linewidth=0.8)
     ax.axhline(
         -value_of(claims, "ch08.rocket.exhaust"), color="0.6", linestyle=":", label="$|v_e|$"

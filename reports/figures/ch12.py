@@ -22,7 +22,7 @@ from mechmodel.lagrange import (
     quasi_velocities,
     trajectory_height,
 )
-from reports.figures import figure, value_of
+from reports.figures import as_float, figure, value_of
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -108,7 +108,7 @@ def _ellipses(fig: Figure, claims: dict[str, EvaluatedClaim]) -> None:
             "C3",
             label=f"collision line, slope ${collision}$",
         )
-        ax.plot([cx], [cy], "ko", ms=4)
+        ax.plot([as_float(cx)], [as_float(cy)], "ko", ms=4)
         ax.set_aspect("equal")
         ax.set_xlim(-span, span)
         ax.set_ylim(-span, span)
