@@ -22,7 +22,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from mechmodel import inputs
-from mechmodel.typing import Real
+from mechmodel.typing import Num, Real
 
 
 def _is_mp(x: object) -> bool:
@@ -46,7 +46,7 @@ def _sqrt(x: Real) -> Real:
     return math.sqrt(x)
 
 
-def kinetic_energy(masses: Sequence[Real], velocities: Sequence[Real]) -> Real:
+def kinetic_energy(masses: Sequence[Num], velocities: Sequence[Num]) -> Num:
     """Total kinetic energy KE = sum 1/2 m v^2 ((3.5b), the Lagrangian of free bodies (12.3));
     finite masses only.
 
