@@ -24,10 +24,14 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import TypeAlias, overload
+from typing import TypeAlias, TypeVar, overload
 
 from mechmodel import inputs
 from mechmodel.typing import Real, Scalar, Symbolic
+
+# what a plain-operator polynomial keeps: Real in, Real out; complex (the complex step), complex;
+# symbols, expressions (a constrained variable: mypy checks the function once with each)
+_Number = TypeVar("_Number", Real, Scalar, Symbolic)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -407,10 +411,8 @@ def polynomial_derivative(coefficients: Sequence[Symbolic]) -> Sequence[Symbolic
 @overload
 def polynomial_integral(coefficients: Sequence[float], x: float) -> float: ...
 @overload
-def polynomial_integral(coefficients: Sequence[Real], x: Real) -> Real: ...
-@overload
-def polynomial_integral(coefficients: Sequence[Symbolic], x: Symbolic) -> Symbolic: ...
-def polynomial_integral(coefficients: Sequence[Symbolic], x: Symbolic) -> Symbolic:
+def polynomial_integral(coefficients: Sequence[_Number], x: _Number) -> _Number: ...
+def polynomial_integral(coefficients: Sequence[_Number], x: _Number) -> _Number:
     """The integral from 0 to ``x`` of p(x) = sum c_k x^k: sum c_k x^(k+1) / (k+1).
 
     Exact with Fraction coefficients and ``x``.

@@ -41,10 +41,3 @@ def _rational(c: Fraction | Gaussian) -> Fraction:
     if isinstance(c, Gaussian):
         raise ValueError(f"the coefficient {c} is not real")
     return c
-
-
-def _abs(x: Real) -> Real:
-    """|x|, exact for an exact x (``abs`` of the whole union is not typed)."""
-    if isinstance(x, Fraction):
-        return abs(x)
-    return abs(x)
