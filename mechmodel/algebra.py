@@ -381,6 +381,24 @@ class Laurent:
             total = total + term
         return total
 
+    def evaluate_real(self, values: Mapping[str, Real]) -> Real:
+        """``evaluate`` for a polynomial with real coefficients at real ``values``: a real
+        number (exact where every value is exact); ``ValueError`` for a complex coefficient."""
+        for c in self.terms.values():
+            Laurent.rational(c)
+        value = self.evaluate(values)
+        if isinstance(value, Gaussian | complex):  # not reached: real terms sum to a real
+            raise ValueError(f"{self!r} is not real at {values}")
+        return value
+
+    @staticmethod
+    def rational(c: Fraction | Gaussian) -> Fraction:
+        """A real coefficient of a ``Laurent`` polynomial (stored as a ``Fraction``: a
+        ``Gaussian`` there has a non-zero imaginary part); ``ValueError`` for a complex one."""
+        if isinstance(c, Gaussian):
+            raise ValueError(f"the coefficient {c} is not real")
+        return c
+
     def reduce_trig(self, cos: str, sin: str) -> Laurent:
         """Rewrite with sin^2 = 1 - cos^2 until sin appears at most to the first power."""
         out = Laurent()

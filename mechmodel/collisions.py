@@ -21,7 +21,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Generic, cast
+from typing import Generic, cast, overload
 
 from mechmodel import inputs
 from mechmodel.ellipse import EnergyEllipse, kinetic_energy
@@ -29,7 +29,7 @@ from mechmodel.ellipse import ellipse_radii as ellipse_radii  # the catalog's co
 from mechmodel.ellipse import energy_ellipse as energy_ellipse
 from mechmodel.numeric import line_angle as line_angle
 from mechmodel.numeric import line_slope as line_slope
-from mechmodel.typing import Matrix, Num, Real, Vector
+from mechmodel.typing import Matrix, Num, Real, Symbolic, Vector
 
 
 @dataclass(frozen=True)
@@ -88,6 +88,12 @@ class Collision(Generic[Num]):
         return center_of_mass_velocity(self.masses, self.before)
 
 
+@overload
+def collide(m1: Real, m2: Real, v1: Real, v2: Real, restitution: Real = 1) -> Collision[Real]: ...
+@overload
+def collide(
+    m1: Symbolic, m2: Symbolic, v1: Real, v2: Real, restitution: Real = 1
+) -> Collision[Symbolic]: ...
 def collide(m1: Num, m2: Num, v1: Real, v2: Real, restitution: Real = 1) -> Collision[Num]:
     """Collide body 1 (mass ``m1``, velocity ``v1``) with body 2 in one dimension.
 
@@ -124,6 +130,10 @@ def collide(m1: Num, m2: Num, v1: Real, v2: Real, restitution: Real = 1) -> Coll
     return Collision((m1, m2), (v1, v2), after)
 
 
+@overload
+def momentum(masses: Sequence[Real], velocities: Sequence[Real]) -> Real: ...
+@overload
+def momentum(masses: Sequence[Symbolic], velocities: Sequence[Symbolic]) -> Symbolic: ...
 def momentum(masses: Sequence[Num], velocities: Sequence[Num]) -> Num:
     """Total momentum P = sum m v (eq. (2.5a)); finite masses only."""
     return sum(m * v for m, v in inputs.bodies(masses, velocities))
@@ -136,6 +146,12 @@ def kinetic_energy_change(m: Real, v_in: Real, v_fin: Real) -> Real:
     return kinetic_energy((m,), (v_fin,)) - kinetic_energy((m,), (v_in,))
 
 
+@overload
+def center_of_mass_velocity(masses: Sequence[Real], velocities: Sequence[Real]) -> Real: ...
+@overload
+def center_of_mass_velocity(
+    masses: Sequence[Symbolic], velocities: Sequence[Symbolic]
+) -> Symbolic: ...
 def center_of_mass_velocity(masses: Sequence[Num], velocities: Sequence[Num]) -> Num:
     """Velocity of the centre of momentum, V_COM = sum m v / sum m (eq. (2.5b))."""
     pairs = inputs.bodies(masses, velocities)
