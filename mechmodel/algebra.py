@@ -24,10 +24,14 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import TypeAlias, overload
+from typing import TypeAlias, TypeVar, overload
 
 from mechmodel import inputs
 from mechmodel.typing import Real, Scalar, Symbolic
+
+# what a plain-operator polynomial keeps: Real in, Real out; complex (the complex step), complex;
+# symbols, expressions (a constrained variable: mypy checks the function once with each)
+_Number = TypeVar("_Number", Real, Scalar, Symbolic)
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -377,6 +381,24 @@ class Laurent:
             total = total + term
         return total
 
+    def evaluate_real(self, values: Mapping[str, Real]) -> Real:
+        """``evaluate`` for a polynomial with real coefficients at real ``values``: a real
+        number (exact where every value is exact); ``ValueError`` for a complex coefficient."""
+        for c in self.terms.values():
+            Laurent.rational(c)
+        value = self.evaluate(values)
+        if isinstance(value, Gaussian | complex):  # not reached: real terms sum to a real
+            raise ValueError(f"{self!r} is not real at {values}")
+        return value
+
+    @staticmethod
+    def rational(c: Fraction | Gaussian) -> Fraction:
+        """A real coefficient of a ``Laurent`` polynomial (stored as a ``Fraction``: a
+        ``Gaussian`` there has a non-zero imaginary part); ``ValueError`` for a complex one."""
+        if isinstance(c, Gaussian):
+            raise ValueError(f"the coefficient {c} is not real")
+        return c
+
     def reduce_trig(self, cos: str, sin: str) -> Laurent:
         """Rewrite with sin^2 = 1 - cos^2 until sin appears at most to the first power."""
         out = Laurent()
@@ -407,10 +429,8 @@ def polynomial_derivative(coefficients: Sequence[Symbolic]) -> Sequence[Symbolic
 @overload
 def polynomial_integral(coefficients: Sequence[float], x: float) -> float: ...
 @overload
-def polynomial_integral(coefficients: Sequence[Real], x: Real) -> Real: ...
-@overload
-def polynomial_integral(coefficients: Sequence[Symbolic], x: Symbolic) -> Symbolic: ...
-def polynomial_integral(coefficients: Sequence[Symbolic], x: Symbolic) -> Symbolic:
+def polynomial_integral(coefficients: Sequence[_Number], x: _Number) -> _Number: ...
+def polynomial_integral(coefficients: Sequence[_Number], x: _Number) -> _Number:
     """The integral from 0 to ``x`` of p(x) = sum c_k x^k: sum c_k x^(k+1) / (k+1).
 
     Exact with Fraction coefficients and ``x``.

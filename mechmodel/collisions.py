@@ -18,9 +18,10 @@ inputs that are perfect squares and are floats otherwise.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import cast
+from typing import Generic, cast, overload
 
 from mechmodel import inputs
 from mechmodel.ellipse import EnergyEllipse, kinetic_energy
@@ -28,53 +29,53 @@ from mechmodel.ellipse import ellipse_radii as ellipse_radii  # the catalog's co
 from mechmodel.ellipse import energy_ellipse as energy_ellipse
 from mechmodel.numeric import line_angle as line_angle
 from mechmodel.numeric import line_slope as line_slope
-from mechmodel.typing import Matrix, Real, Symbolic, Vector
+from mechmodel.typing import Matrix, Num, Real, Symbolic, Vector
 
 
 @dataclass(frozen=True)
-class Collision:
+class Collision(Generic[Num]):
     """A two-body collision: masses, velocities before and after.
 
     ``momentum``, ``ke_before``, ``ke_after``, ``ke_lost`` need finite masses. The masses, and
     so the velocities after, may be sympy symbols (the collision matrix (5.1b) as a formula).
     """
 
-    masses: tuple[Symbolic, Symbolic]
-    before: tuple[Real, Real]
-    after: tuple[Symbolic, Symbolic]
+    masses: tuple[Num, Num]
+    before: tuple[Num, Num]
+    after: tuple[Num, Num]
 
     @property
-    def v1(self) -> Symbolic:
+    def v1(self) -> Num:
         """Velocity of body 1 after the collision."""
         return self.after[0]
 
     @property
-    def v2(self) -> Symbolic:
+    def v2(self) -> Num:
         """Velocity of body 2 after the collision."""
         return self.after[1]
 
     @property
-    def momentum(self) -> Real:
+    def momentum(self) -> Num:
         """Total momentum m1 v1 + m2 v2 (the same before and after, eq. (2.5a))."""
         return momentum(self.masses, self.after)
 
     @property
-    def ke_before(self) -> Real:
+    def ke_before(self) -> Num:
         """Total kinetic energy before, sum of 1/2 m v^2 (eq. (3.5b))."""
         return kinetic_energy(self.masses, self.before)
 
     @property
-    def ke_after(self) -> Real:
+    def ke_after(self) -> Num:
         """Total kinetic energy after the collision."""
         return kinetic_energy(self.masses, self.after)
 
     @property
-    def ke_lost(self) -> Real:
+    def ke_lost(self) -> Num:
         """Kinetic energy lost to crumpling (zero when elastic)."""
         return self.ke_before - self.ke_after
 
     @property
-    def com_velocity(self) -> Real:
+    def com_velocity(self) -> Num:
         """Velocity V_COM of the centre of momentum (2.5b), the same before and after.
 
         With an infinite mass (a wall) it is the wall's velocity.
@@ -87,7 +88,13 @@ class Collision:
         return center_of_mass_velocity(self.masses, self.before)
 
 
-def collide(m1: Symbolic, m2: Symbolic, v1: Real, v2: Real, restitution: Real = 1) -> Collision:
+@overload
+def collide(m1: Real, m2: Real, v1: Real, v2: Real, restitution: Real = 1) -> Collision[Real]: ...
+@overload
+def collide(
+    m1: Symbolic, m2: Symbolic, v1: Real, v2: Real, restitution: Real = 1
+) -> Collision[Symbolic]: ...
+def collide(m1: Num, m2: Num, v1: Real, v2: Real, restitution: Real = 1) -> Collision[Num]:
     """Collide body 1 (mass ``m1``, velocity ``v1``) with body 2 in one dimension.
 
     Momentum is conserved and the relative velocity reverses, scaled by the restitution ``e``:
@@ -107,6 +114,7 @@ def collide(m1: Symbolic, m2: Symbolic, v1: Real, v2: Real, restitution: Real = 
     infinite1, infinite2 = inputs.is_infinite(m1), inputs.is_infinite(m2)
     if infinite1 and infinite2:
         raise ValueError("two infinite masses cannot collide")
+    after: tuple[Num, Num]
     if infinite1:
         after = (v1, v1 + restitution * (v1 - v2))
     elif infinite2:
@@ -122,7 +130,11 @@ def collide(m1: Symbolic, m2: Symbolic, v1: Real, v2: Real, restitution: Real = 
     return Collision((m1, m2), (v1, v2), after)
 
 
-def momentum(masses: Vector, velocities: Vector) -> Real:
+@overload
+def momentum(masses: Sequence[Real], velocities: Sequence[Real]) -> Real: ...
+@overload
+def momentum(masses: Sequence[Symbolic], velocities: Sequence[Symbolic]) -> Symbolic: ...
+def momentum(masses: Sequence[Num], velocities: Sequence[Num]) -> Num:
     """Total momentum P = sum m v (eq. (2.5a)); finite masses only."""
     return sum(m * v for m, v in inputs.bodies(masses, velocities))
 
@@ -134,7 +146,13 @@ def kinetic_energy_change(m: Real, v_in: Real, v_fin: Real) -> Real:
     return kinetic_energy((m,), (v_fin,)) - kinetic_energy((m,), (v_in,))
 
 
-def center_of_mass_velocity(masses: Vector, velocities: Vector) -> Real:
+@overload
+def center_of_mass_velocity(masses: Sequence[Real], velocities: Sequence[Real]) -> Real: ...
+@overload
+def center_of_mass_velocity(
+    masses: Sequence[Symbolic], velocities: Sequence[Symbolic]
+) -> Symbolic: ...
+def center_of_mass_velocity(masses: Sequence[Num], velocities: Sequence[Num]) -> Num:
     """Velocity of the centre of momentum, V_COM = sum m v / sum m (eq. (2.5b))."""
     pairs = inputs.bodies(masses, velocities)
     return sum(m * v for m, v in pairs) / sum(m for m, _ in pairs)
@@ -208,7 +226,7 @@ def shift_frame(velocities: Vector, frame_velocity: Real) -> tuple[Real, ...]:
 
 def collide_in_frame(
     m1: Real, m2: Real, v1: Real, v2: Real, frame_velocity: Real, restitution: Real = 1
-) -> Collision:
+) -> Collision[Real]:
     """The collision of ``collide`` seen from a frame moving at ``frame_velocity``.
 
     ``v1``, ``v2`` are Earth-frame velocities; the result's ``before`` and ``after`` are frame
@@ -220,7 +238,7 @@ def collide_in_frame(
     return collide(m1, m2, w1, w2, restitution)
 
 
-def velocity_reversed(hit: Collision) -> Collision:
+def velocity_reversed(hit: Collision[Num]) -> Collision[Num]:
     """The collision with every velocity negated, V -> -V (reflection through the origin of
     the (V1, V2) plane, the book's reflection through the COM point in Fig. 2.4).
 
@@ -230,7 +248,7 @@ def velocity_reversed(hit: Collision) -> Collision:
     return Collision(hit.masses, (-hit.before[0], -hit.before[1]), (-hit.after[0], -hit.after[1]))
 
 
-def time_reversed(hit: Collision) -> Collision:
+def time_reversed(hit: Collision[Num]) -> Collision[Num]:
     """The time-reversed collision (Delta t -> -Delta t): it starts from the reversed outgoing
     velocities and ends at the reversed incoming ones (Fig. 2.4, the reversed video of Fig. 2.2).
 
@@ -242,7 +260,7 @@ def time_reversed(hit: Collision) -> Collision:
 
 def collide_reversed(
     m1: Real, m2: Real, v1: Real, v2: Real, frame_velocity: Real = 0, restitution: Real = 1
-) -> Collision:
+) -> Collision[Real]:
     """The collision that starts from the reversed incoming velocities, in a frame at u.
 
     Seen from the frame moving at ``frame_velocity``, the incoming velocities (v - u) are
@@ -355,8 +373,8 @@ class PartialCollision:
     before: tuple[Real, Real]
     energy_after: Real
     restitution: Real
-    rebound: Collision
-    pass_through: Collision
+    rebound: Collision[Real]
+    pass_through: Collision[Real]
 
     @property
     def ke_before(self) -> Real:

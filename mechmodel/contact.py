@@ -20,15 +20,18 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import cast, overload
+from typing import TypeVar, cast, overload
 
 from mechmodel import inputs
 from mechmodel.algebra import polynomial_derivative, polynomial_integral
+from mechmodel.exact import magnitude
 from mechmodel.numeric import complex_step_derivative
 from mechmodel.softcontact import INTEGRATORS as INTEGRATORS
 from mechmodel.softcontact import SoftCollision as SoftCollision
 from mechmodel.softcontact import soft_collision as soft_collision
 from mechmodel.typing import Real, Scalar, Symbolic
+
+_Field = TypeVar("_Field", Real, Scalar)  # a real radius gives real coefficients; complex, complex
 
 # --- the dent: Fig. 7.1, (7.1)-(7.4) ---------------------------------------------------------
 
@@ -136,7 +139,7 @@ class DentVolume:
     whole_ball_power: float
 
 
-def _dent_polynomial(radius: Scalar) -> list[Scalar]:
+def _dent_polynomial(radius: _Field) -> list[_Field]:
     """pi r(x)^2 / pi = x (2R - x) = 2R x - x^2, coefficients by power of x."""
     return [0, radius + radius, -1]
 
@@ -320,7 +323,7 @@ def quadratic_potential_force(a: Real, b: Real) -> QuadraticForce:
     inputs.real(a, "a")
     inputs.real(b, "b")
     constant, linear = (-c for c in polynomial_derivative([0, b, a]))
-    return QuadraticForce(linear, constant, abs(linear), abs(constant))
+    return QuadraticForce(linear, constant, magnitude(linear), magnitude(constant))
 
 
 @dataclass(frozen=True)

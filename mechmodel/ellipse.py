@@ -20,9 +20,10 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import overload
 
 from mechmodel import inputs
-from mechmodel.typing import Real
+from mechmodel.typing import Num, Real, Symbolic
 
 
 def _is_mp(x: object) -> bool:
@@ -46,7 +47,11 @@ def _sqrt(x: Real) -> Real:
     return math.sqrt(x)
 
 
-def kinetic_energy(masses: Sequence[Real], velocities: Sequence[Real]) -> Real:
+@overload
+def kinetic_energy(masses: Sequence[Real], velocities: Sequence[Real]) -> Real: ...
+@overload
+def kinetic_energy(masses: Sequence[Symbolic], velocities: Sequence[Symbolic]) -> Symbolic: ...
+def kinetic_energy(masses: Sequence[Num], velocities: Sequence[Num]) -> Num:
     """Total kinetic energy KE = sum 1/2 m v^2 ((3.5b), the Lagrangian of free bodies (12.3));
     finite masses only.
 

@@ -12,7 +12,17 @@ import math
 from fractions import Fraction
 
 from mechmodel import inputs
-from mechmodel.typing import Real
+from mechmodel.typing import Real, Scalar
+
+
+def magnitude(x: Scalar) -> Real:
+    """|x|: exact for an exact x, a float for a float or a complex number. (mypy types ``abs``
+    of a union of number types as an object; each branch here is one type.)"""
+    if isinstance(x, complex):
+        return abs(x)
+    if isinstance(x, Fraction):
+        return abs(x)
+    return abs(x)
 
 
 def exact_sqrt(x: Real) -> Real:

@@ -21,7 +21,7 @@ from collections.abc import Callable
 from typing import SupportsFloat
 
 from mechmodel import inputs
-from mechmodel.typing import Real
+from mechmodel.typing import Real, Scalar
 
 _COMPLEX_STEP = 1e-30  # far below rounding: the complex-step slope is exact to rounding
 _LOG_STEP = 1e-4  # step in ln x of the central-difference log-slope
@@ -31,7 +31,7 @@ def _is_mp(x: object) -> bool:
     return type(x).__module__.startswith("mpmath")
 
 
-def complex_step_derivative(f: Callable[[complex], complex], x: Real) -> float:
+def complex_step_derivative(f: Callable[[complex], Scalar], x: Real) -> float:
     """df/dx at ``x`` by the complex step, Im f(x + i h) / h.
 
     ``f`` must be analytic near the real axis and written with plain operators (or ``cmath``),

@@ -38,7 +38,7 @@ class Tower:
 
     masses: tuple[Real, ...]
     rebound: Real
-    bangs: tuple[Collision, ...]
+    bangs: tuple[Collision[Real], ...]
     velocities: tuple[Real, ...]
 
     @property

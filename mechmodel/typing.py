@@ -12,6 +12,9 @@ say which of these a function accepts:
   which a formula claim calls with sympy symbols and compares with the book's formula.
   sympy ships no type information, so the expression is the Protocol ``Expression``: what
   a sympy expression offers such a function, the operators + - * / ** and unary minus.
+- ``Num``: a type variable over ``Real`` and ``Symbolic`` for a function of plain operators
+  that gives back what it was given: ``Real`` in, ``Real`` out; ``Symbolic`` in, ``Symbolic``
+  out (a constrained variable: mypy checks the function once with each).
 - ``Vector`` and ``Matrix``: a list of numbers (velocities of n balls, a state) and a list of
   rows (a collision or bang matrix); the plane's fixed pairs are ``planar.Vector`` and
   ``planar.Matrix``.
@@ -34,6 +37,7 @@ __all__ = [
     "Exact",
     "Expression",
     "Matrix",
+    "Num",
     "Real",
     "Scalar",
     "Symbolic",
@@ -66,6 +70,7 @@ class Expression(Protocol):
 
 
 Symbolic: TypeAlias = Real | Expression
+Num = TypeVar("Num", Real, Symbolic)  # Real in, Real out; Symbolic in, Symbolic out
 Vector: TypeAlias = Sequence[Real]
 Matrix: TypeAlias = Sequence[Sequence[Real]]
 

@@ -18,6 +18,7 @@ from typing import cast
 
 from mechmodel import inputs
 from mechmodel.collisions import collide
+from mechmodel.exact import magnitude
 from mechmodel.typing import Real, Vector
 
 
@@ -199,7 +200,7 @@ def galileo_shifted_collision(
     total = m1 * before[0] ** 2 + m2 * before[1] ** 2
     if total == 0:
         raise ValueError("both balls at rest: no energy to transfer")
-    transfer = abs(ke1_before - ke1_after) / total
+    transfer = magnitude(ke1_before - ke1_after) / total
     return ShiftedCollision(before, hit.after, transfer)
 
 

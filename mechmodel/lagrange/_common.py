@@ -9,7 +9,6 @@ from collections.abc import Sized
 from fractions import Fraction
 from types import ModuleType
 
-from mechmodel.algebra import Gaussian
 from mechmodel.typing import Real
 
 
@@ -33,18 +32,3 @@ def _power(x: Real, e: Fraction) -> Real:
     if e.denominator == 1:
         return x ** int(e)
     return x ** float(e) if not isinstance(x, Fraction | int) else float(x) ** float(e)
-
-
-def _rational(c: Fraction | Gaussian) -> Fraction:
-    """A real coefficient of a ``Laurent`` polynomial (stored as a ``Fraction``: a
-    ``Gaussian`` there has a non-zero imaginary part); ``ValueError`` for a complex one."""
-    if isinstance(c, Gaussian):
-        raise ValueError(f"the coefficient {c} is not real")
-    return c
-
-
-def _abs(x: Real) -> Real:
-    """|x|, exact for an exact x (``abs`` of the whole union is not typed)."""
-    if isinstance(x, Fraction):
-        return abs(x)
-    return abs(x)

@@ -17,7 +17,6 @@ from fractions import Fraction
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy
-from mechmodel.lagrange._common import _rational
 from mechmodel.typing import Matrix, Real, Symbolic, Vector
 
 
@@ -45,8 +44,8 @@ def quadratic_extremum(linear_coefficient: Real) -> QuadraticExtremum:
     q = Laurent.var("q")
     derivative = (q**2 + b * q).diff("q")
     slope, constant = (
-        _rational(derivative.part("q", 1).only_coefficient()),
-        _rational(derivative.part("q", 0).value()),
+        Laurent.rational(derivative.part("q", 1).only_coefficient()),
+        Laurent.rational(derivative.part("q", 0).value()),
     )
     return QuadraticExtremum(slope=slope, constant=constant, point=-constant / slope)
 
@@ -81,7 +80,7 @@ def gradient_potential(
     form = field_dot_v.integrate("t").substitute("t", 1)
     total: Symbolic = 0
     for key, c in form.terms.items():  # the Fraction times the values: exact where they are
-        term: Symbolic = c
+        term: Symbolic = Laurent.rational(c)
         for name, e in key:
             term = term * names[name] ** e
         total = total + term
@@ -112,7 +111,7 @@ def metric_kinetic_energy(mass: Real, metric: Matrix, rates: Vector) -> float:
             rest = g[i][j] - sum(factor[k][i] * factor[k][j] for k in range(i))
             factor[i][j] = rest / diagonal
     velocity = [sum(factor[i][j] * q[j] for j in range(n)) for i in range(n)]
-    return kinetic_energy([mass] * n, velocity)
+    return float(kinetic_energy([mass] * n, velocity))  # the velocity is float
 
 
 @dataclass(frozen=True)
@@ -143,8 +142,10 @@ def hamiltonian_of_rate(
     lag = _coordinate_lagrangian()
     momentum = lag.diff("qd")
     values = {"M": mass, "g": metric, "qd": rate, "U": potential}
-    p = momentum.evaluate(values)
-    return CoordinateHamiltonian(rate=rate, momentum=p, hamiltonian=p * rate - lag.evaluate(values))
+    p = momentum.evaluate_real(values)
+    return CoordinateHamiltonian(
+        rate=rate, momentum=p, hamiltonian=p * rate - lag.evaluate_real(values)
+    )
 
 
 def hamiltonian_of_momentum(
@@ -163,10 +164,10 @@ def hamiltonian_of_momentum(
     if p_of_rate.part("qd", 0).terms:
         raise ValueError("p = dL/dq' has a part free of q'")
     values = {"M": mass, "g": metric, "U": potential}
-    rate = momentum / p_of_rate.diff("qd").evaluate(values)
+    rate = momentum / p_of_rate.diff("qd").evaluate_real(values)
     values["qd"] = rate
     return CoordinateHamiltonian(
-        rate=rate, momentum=momentum, hamiltonian=momentum * rate - lag.evaluate(values)
+        rate=rate, momentum=momentum, hamiltonian=momentum * rate - lag.evaluate_real(values)
     )
 
 
@@ -176,4 +177,4 @@ def quadratic_function_slope(point: Real, linear_coefficient: Real) -> Real:
     b = Fraction(inputs.real(linear_coefficient, "linear_coefficient"))
     inputs.real(point, "point")
     q = Laurent.var("q")
-    return (q**2 + b * q).diff("q").evaluate({"q": point})
+    return (q**2 + b * q).diff("q").evaluate_real({"q": point})

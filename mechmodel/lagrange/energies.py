@@ -17,8 +17,8 @@ from fractions import Fraction
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy, momentum_radius, velocity_radius
-from mechmodel.exact import exact_sqrt
-from mechmodel.lagrange._common import _abs, _power, _same_length, _sqrt
+from mechmodel.exact import exact_sqrt, magnitude
+from mechmodel.lagrange._common import _power, _same_length, _sqrt
 from mechmodel.typing import Real, Vector
 
 
@@ -178,11 +178,11 @@ def ke_ellipse_slopes(collision_slope: Real) -> EllipseSlopes:
         quasi_collision=quasi_collision,
         quasi_tangent=tangent(com_quasi),
         quasi_bisector=slope(r1 * bisector_v[0], r2 * bisector_v[1]),
-        quasi_steepness=_abs(quasi_collision),
+        quasi_steepness=magnitude(quasi_collision),
         momentum_collision=momentum_collision,
         momentum_tangent=tangent(grad_h),
         momentum_bisector=slope(m1 * bisector_v[0], m2 * bisector_v[1]),
-        momentum_steepness=_abs(momentum_collision),
+        momentum_steepness=magnitude(momentum_collision),
     )
 
 

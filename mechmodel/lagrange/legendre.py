@@ -15,7 +15,6 @@ from fractions import Fraction
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy
-from mechmodel.lagrange._common import _rational
 from mechmodel.lagrange.energies import hamiltonian_free
 from mechmodel.typing import Real
 
@@ -86,8 +85,8 @@ def legendre_stationarity() -> LegendreStationarity:
     h_of_v = (p * v - lagrangian).diff("v").substitute("v", hamiltonian.diff("p"))
     l_of_p = (p * v - hamiltonian).diff("p").substitute("p", lagrangian.diff("v"))
     return LegendreStationarity(
-        hamiltonian_velocity_slope=_rational(h_of_v.value()),
-        lagrangian_momentum_slope=_rational(l_of_p.value()),
+        hamiltonian_velocity_slope=Laurent.rational(h_of_v.value()),
+        lagrangian_momentum_slope=Laurent.rational(l_of_p.value()),
     )
 
 

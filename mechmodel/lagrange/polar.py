@@ -19,7 +19,7 @@ from fractions import Fraction
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
 from mechmodel.ellipse import kinetic_energy
-from mechmodel.lagrange._common import _lib, _rational
+from mechmodel.lagrange._common import _lib
 from mechmodel.lagrange.calculus import angle_derivative, time_derivative
 from mechmodel.typing import Real, Vector
 
@@ -148,25 +148,25 @@ def polar_mechanics() -> PolarMechanics:
     p_phi_rate = time_derivative(p_phi, _POLAR_RATES)
     return PolarMechanics(
         jacobian_determinant_r_power=det.power("r"),
-        metric_rr=_rational(metric[0][0].value()),
-        metric_rphi=_rational(metric[0][1].value()),
-        metric_phir=_rational(metric[1][0].value()),
-        metric_phiphi_coefficient=_rational(metric[1][1].only_coefficient()),
+        metric_rr=Laurent.rational(metric[0][0].value()),
+        metric_rphi=Laurent.rational(metric[0][1].value()),
+        metric_phir=Laurent.rational(metric[1][0].value()),
+        metric_phiphi_coefficient=Laurent.rational(metric[1][1].only_coefficient()),
         metric_phiphi_r_power=metric[1][1].power("r"),
-        inverse_metric_rr=_rational(inverse[0][0].value()),
-        inverse_metric_rphi=_rational(inverse[0][1].value()),
-        inverse_metric_phir=_rational(inverse[1][0].value()),
-        inverse_metric_phiphi_coefficient=_rational(inverse[1][1].only_coefficient()),
+        inverse_metric_rr=Laurent.rational(inverse[0][0].value()),
+        inverse_metric_rphi=Laurent.rational(inverse[0][1].value()),
+        inverse_metric_phir=Laurent.rational(inverse[1][0].value()),
+        inverse_metric_phiphi_coefficient=Laurent.rational(inverse[1][1].only_coefficient()),
         inverse_metric_phiphi_r_power=inverse[1][1].power("r"),
-        kinetic_radial_coefficient=_rational(radial.only_coefficient()),
-        kinetic_angular_coefficient=_rational(angular.only_coefficient()),
+        kinetic_radial_coefficient=Laurent.rational(radial.only_coefficient()),
+        kinetic_angular_coefficient=Laurent.rational(angular.only_coefficient()),
         kinetic_angular_rate_power=angular.power("pd"),
         kinetic_angular_r_power=angular.power("r"),
-        radial_momentum_coefficient=_rational(p_r.only_coefficient()),
+        radial_momentum_coefficient=Laurent.rational(p_r.only_coefficient()),
         angular_momentum_r_power=p_phi.power("r"),
         centrifugal_rate_power=centrifugal.power("pd"),
         angular_momentum_rate_r_power=p_phi_rate.part("pdd", 1).power("r"),
-        coriolis_coefficient=_rational(p_phi_rate.part("pdd", 0).only_coefficient()),
+        coriolis_coefficient=Laurent.rational(p_phi_rate.part("pdd", 0).only_coefficient()),
     )
 
 
@@ -226,12 +226,12 @@ def polar_forces(mass: Real, state: PolarState) -> PolarForces:
     }
     p_phi_rate = time_derivative(p_phi, _POLAR_RATES)
     return PolarForces(
-        radial_momentum=p_r.evaluate(values),
-        angular_momentum=p_phi.evaluate(values),
-        radial_momentum_rate=time_derivative(p_r, _POLAR_RATES).evaluate(values),
-        centrifugal=kinetic.diff("r").evaluate(values),
-        angular_momentum_rate=p_phi_rate.evaluate(values),
-        coriolis=p_phi_rate.part("pdd", 0).evaluate(values),
+        radial_momentum=p_r.evaluate_real(values),
+        angular_momentum=p_phi.evaluate_real(values),
+        radial_momentum_rate=time_derivative(p_r, _POLAR_RATES).evaluate_real(values),
+        centrifugal=kinetic.diff("r").evaluate_real(values),
+        angular_momentum_rate=p_phi_rate.evaluate_real(values),
+        coriolis=p_phi_rate.part("pdd", 0).evaluate_real(values),
     )
 
 
@@ -268,7 +268,7 @@ def polar_lagrangian(
     T = M (vx^2 + vy^2)/2 (12.23). Floats (the Jacobian takes the cosine and sine)."""
     j = polar_jacobian(r, phi)
     velocity = [j[k][0] * rdot + j[k][1] * phidot for k in range(2)]
-    return kinetic_energy([mass, mass], velocity) - potential
+    return float(kinetic_energy([mass, mass], velocity) - potential)  # the velocity is float
 
 
 def polar_terms(

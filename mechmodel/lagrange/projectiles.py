@@ -14,10 +14,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import cast
 
 from mechmodel import inputs
 from mechmodel.algebra import Laurent
-from mechmodel.lagrange._common import _lib, _rational
+from mechmodel.lagrange._common import _lib
 from mechmodel.lagrange.calculus import angle_derivative
 from mechmodel.typing import Real
 
@@ -79,6 +80,11 @@ def _generating_polynomial() -> Laurent:
     return height_x - Laurent.var("y")
 
 
+# _INEXACT_TERMS: the cast to float of a polynomial in the cosine c and sine s of the angle at
+# these values: every term but -y holds c or s, a float (an mpmath number for an mpmath angle,
+# which mechmodel's mpmath branches treat as a float), so the exact sum is a float.
+
+
 def _fountain_values(x: Real, y: Real, speed: Real, angle: Real, gravity: Real) -> dict[str, Real]:
     inputs.real(x, "x")
     inputs.real(y, "y")
@@ -96,7 +102,8 @@ def generating_solution(x: Real, y: Real, speed: Real, angle: Real, gravity: Rea
     """The contact generating function S(v0, a : x, y) = -y + y(x) of (12.15) at the point
     (x, y), m: zero on the trajectory of speed v0 and elevation a, positive below it. From the
     exact polynomial of ``_generating_polynomial``."""
-    return _generating_polynomial().evaluate(_fountain_values(x, y, speed, angle, gravity))
+    values = _fountain_values(x, y, speed, angle, gravity)
+    return cast(float, _generating_polynomial().evaluate_real(values))  # _INEXACT_TERMS
 
 
 def _angle_slope() -> Laurent:
@@ -108,7 +115,8 @@ def generating_angle_derivative(x: Real, speed: Real, angle: Real, gravity: Real
     """dS/da of the generating function (12.16b) at x for the elevation a, m/rad: the exact
     angle derivative (cos' = -sin, sin' = cos) of the polynomial S, evaluated. It vanishes
     where the trajectory of elevation a touches the envelope of the family."""
-    return _angle_slope().evaluate(_fountain_values(x, 0, speed, angle, gravity))
+    values = _fountain_values(x, 0, speed, angle, gravity)
+    return cast(float, _angle_slope().evaluate_real(values))  # _INEXACT_TERMS
 
 
 def contact_tangent(x: Real, speed: Real, gravity: Real) -> Real:
@@ -125,10 +133,10 @@ def contact_tangent(x: Real, speed: Real, gravity: Real) -> Real:
     if any(dict(k).get(n, 0) for k in (*a.terms, *b.terms) for n in ("c", "s")):
         raise ValueError("dS/da is not of the form (A cos a + B sin a)/cos^3 a")
     values = {"x": x, "g": gravity, "v0": speed}
-    denominator = b.evaluate(values)
+    denominator = b.evaluate_real(values)
     if denominator == 0:
         raise ValueError("no trajectory touches the envelope at x = 0")
-    return -a.evaluate(values) / denominator
+    return -a.evaluate_real(values) / denominator
 
 
 def contact_distance(speed: Real, angle: Real, gravity: Real) -> float:
@@ -141,11 +149,11 @@ def contact_distance(speed: Real, angle: Real, gravity: Real) -> float:
     quadratic = slope.part("x", 2) / Laurent.var("x", 2)
     if slope != linear * Laurent.var("x") + quadratic * Laurent.var("x", 2):
         raise ValueError("dS/da is not of the form A x + B x^2")
-    b = quadratic.evaluate(values)
-    a = linear.evaluate(values)
+    b = quadratic.evaluate_real(values)
+    a = linear.evaluate_real(values)
     if b == 0:
         raise ValueError("the horizontal trajectory never contacts the envelope")
-    return -a / b
+    return cast(float, -a / b)  # _INEXACT_TERMS
 
 
 def envelope_by_maximum(x: Real, speed: Real, gravity: Real) -> float:
@@ -241,7 +249,7 @@ def projectile_family() -> ProjectileFamily:
     k_sec = next(
         k for k in range(1, 5) if (secant2 - (tan_ratio**k).reduce_trig("c", "s")).is_constant()
     )
-    sec_constant = _rational((secant2 - (tan_ratio**k_sec).reduce_trig("c", "s")).value())
+    sec_constant = Laurent.rational((secant2 - (tan_ratio**k_sec).reduce_trig("c", "s")).value())
     # S in T: y(x) = x T - g x^2 (1 + T^2) / (2 v0^2)
     quad_no_cos = quad * Laurent.var("c", 2)
     height_tan = x * tan + quad_no_cos * (sec_constant + tan**k_sec)
@@ -252,27 +260,27 @@ def projectile_family() -> ProjectileFamily:
     env_const = envelope.part("x", 0)
     env_quad = envelope.part("x", 2)
     env_x2, traj_x2 = (
-        _rational(env_quad.only_coefficient()),
-        _rational(quad_no_cos.only_coefficient()),
+        Laurent.rational(env_quad.only_coefficient()),
+        Laurent.rational(quad_no_cos.only_coefficient()),
     )
     shape_ratio = env_x2 / traj_x2  # = cos^2 a
     return ProjectileFamily(
-        time_coefficient=-_rational(gravity_term.only_coefficient()),
+        time_coefficient=-Laurent.rational(gravity_term.only_coefficient()),
         time_power=gravity_term.power("t"),
-        quadratic_denominator=1 / abs(_rational(quad.only_coefficient())),
+        quadratic_denominator=1 / abs(Laurent.rational(quad.only_coefficient())),
         x_power=quad.power("x"),
         v0_power=-quad.power("v0"),
         cos_power=-quad.power("c"),
         tan_derivative_cos_power=-d_tan.power("c"),
-        secant_derivative_coefficient=_rational(d_secant2.only_coefficient()),
+        secant_derivative_coefficient=Laurent.rational(d_secant2.only_coefficient()),
         secant_derivative_cos_power=-d_secant2.power("c"),
         secant_tan_constant=sec_constant,
         secant_tan_power=k_sec,
         contact_tan_v0_power=contact_tan.power("v0"),
         contact_tan_square_v0_power=(contact_tan**2).power("v0"),
-        envelope_constant_denominator=1 / _rational(env_const.only_coefficient()),
+        envelope_constant_denominator=1 / Laurent.rational(env_const.only_coefficient()),
         envelope_constant_v0_power=env_const.power("v0"),
-        envelope_quadratic_denominator=1 / abs(_rational(env_quad.only_coefficient())),
+        envelope_quadratic_denominator=1 / abs(Laurent.rational(env_quad.only_coefficient())),
         envelope_x_power=env_quad.power("x"),
         envelope_v0_power=-env_quad.power("v0"),
         envelope_shape_angle=math.acos(math.sqrt(float(shape_ratio))),

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from mechmodel import inputs
-from mechmodel.exact import exact_sqrt
+from mechmodel.exact import exact_sqrt, magnitude
 from mechmodel.oscillators._common import check_semi_axes, exact_div
 from mechmodel.planar import (
     Matrix,
@@ -155,7 +155,7 @@ def ellipse_from_form(A: Real, B: Real, C: Real) -> EllipseParameters:  # noqa: 
         raise ValueError(f"r.Q.r = 1 is {kind}, not an ellipse or hyperbola")
     angle = math.atan2(2 * B, A - C) / 2 if (B != 0 or A != C) else 0.0
     radius = _reciprocal(exact_sqrt(hi))
-    other = _reciprocal(exact_sqrt(abs(lo)))
+    other = _reciprocal(exact_sqrt(magnitude(lo)))
     return EllipseParameters(radius, other, angle, kind)
 
 
