@@ -20,7 +20,7 @@ NAN = float("nan")
 @pytest.mark.parametrize("bad", [0, -1, -1e-9, NAN, -math.inf, True, 1j])
 def test_a_mass_must_be_positive(bad: object) -> None:
     with pytest.raises(ValueError, match="m1"):
-        collide(bad, 1, 1, 0)  # type: ignore[arg-type]  # deliberate: the run-time check is tested
+        collide(bad, 1, 1, 0)  # type: ignore[call-overload]  # deliberate: the run-time check is tested
 
 
 @pytest.mark.parametrize("bad", [NAN, math.inf, -math.inf])

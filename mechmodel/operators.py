@@ -23,7 +23,7 @@ from typing import TypeAlias
 from mechmodel import inputs
 from mechmodel.bangs import ceiling_bounce, floor_bounce
 from mechmodel.collisions import collide
-from mechmodel.exact import exact_sqrt
+from mechmodel.exact import exact_sqrt, magnitude
 from mechmodel.planar import (
     Matrix,
     as_matrix,
@@ -45,11 +45,11 @@ Rows: TypeAlias = Sequence[Sequence[Scalar]]
 # -- multiples of the unit matrix (p. 5.15) ---------------------------------------------------
 def scalar_of_identity(a: Rows) -> Scalar:
     """The number s where A = s times the unit matrix; ``ValueError`` if A is not one."""
-    m = as_matrix(a)  # entries untyped: abs of a Scalar union would be an object to mypy
+    m = as_matrix(a)
     s = m[0][0]
-    scale = max(abs(x) for row in m for x in row) or 1
+    scale = max(magnitude(x) for row in m for x in row) or 1
     tol = 1e-12 * scale if isinstance(s, float | complex) else 0
-    if abs(m[0][1]) > tol or abs(m[1][0]) > tol or abs(m[1][1] - s) > tol:
+    if magnitude(m[0][1]) > tol or magnitude(m[1][0]) > tol or magnitude(m[1][1] - s) > tol:
         raise ValueError("the matrix is not a multiple of the unit matrix")
     if isinstance(s, complex) and abs(s.imag) <= tol:
         return s.real
@@ -199,7 +199,7 @@ def reflection(phi: Real) -> Matrix:
 def rotation_angle(a: RealRows) -> float:
     """The angle (radians, in (-pi, pi]) of a rotation matrix; ``ValueError`` if det is not +1."""
     a = as_matrix(a)
-    if abs(determinant(a) - 1) > 1e-9:
+    if magnitude(determinant(a) - 1) > 1e-9:
         raise ValueError("not a rotation: its determinant is not +1")
     return math.atan2(a[1][0], a[0][0])
 
@@ -210,7 +210,7 @@ def mirror_angle(a: RealRows) -> float:
     ``ValueError`` if the determinant is not -1.
     """
     a = as_matrix(a)
-    if abs(determinant(a) + 1) > 1e-9:
+    if magnitude(determinant(a) + 1) > 1e-9:
         raise ValueError("not a reflection: its determinant is not -1")
     return math.atan2(a[0][1], a[0][0]) / 2
 

@@ -22,7 +22,7 @@ from typing import TypeAlias, TypeVar, overload
 
 from mechmodel import inputs
 from mechmodel.exact import exact_sqrt
-from mechmodel.typing import Real, Symbolic
+from mechmodel.typing import Real, Scalar, Symbolic
 
 T = TypeVar("T")  # an entry: a number, a sympy symbol, anything the caller computes with
 Vector: TypeAlias = tuple[T, T]
@@ -100,13 +100,19 @@ def apply(a: Sequence[Sequence[Symbolic]], v: Sequence[Symbolic]) -> Vector[Symb
 def matrix_product(a: Sequence[Sequence[float]], b: Sequence[Sequence[float]]) -> Matrix[float]: ...
 @overload
 def matrix_product(a: Sequence[Sequence[Real]], b: Sequence[Sequence[Real]]) -> Matrix[Real]: ...
+# complex entries (the Pauli and quaternion units of p. 5.15); real ones match the overload above,
+# so the overlap mypy reports with the symbolic one below is never reached
+@overload
+def matrix_product(  # type: ignore[overload-overlap]
+    a: Sequence[Sequence[Scalar]], b: Sequence[Sequence[Scalar]]
+) -> Matrix[Scalar]: ...
 @overload
 def matrix_product(
     a: Sequence[Sequence[Symbolic]], b: Sequence[Sequence[Symbolic]]
 ) -> Matrix[Symbolic]: ...
 def matrix_product(
-    a: Sequence[Sequence[Symbolic]], b: Sequence[Sequence[Symbolic]]
-) -> Matrix[Symbolic]:
+    a: Sequence[Sequence[Scalar | Symbolic]], b: Sequence[Sequence[Scalar | Symbolic]]
+) -> Matrix[Scalar | Symbolic]:
     """The product A B: B acts first, then A (5.2b): row-by-column sums."""
     p, q = as_matrix(a), as_matrix(b)
     return (

@@ -11,11 +11,11 @@ import cmath
 from fractions import Fraction
 
 from mechmodel import inputs
-from mechmodel.algebra import Gaussian
+from mechmodel.algebra import Coefficient, Gaussian
 from mechmodel.typing import Real
 
 
-def _real(value: Fraction | Gaussian, what: str) -> Fraction:
+def _real(value: Coefficient, what: str) -> Fraction:
     g = Gaussian.of(value)
     if g.im != 0:
         raise ArithmeticError(f"{what} should be real, got {g}")

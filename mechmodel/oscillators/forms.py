@@ -19,6 +19,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from fractions import Fraction
+from typing import overload
 
 from mechmodel import inputs
 from mechmodel.exact import exact_sqrt, magnitude
@@ -63,7 +64,11 @@ def ellipse_form(a: Real, b: Real) -> Matrix:
     return matrix_product(r, r)
 
 
-def form_value(matrix: Matrix, vector: Sequence[Symbolic]) -> Symbolic:
+@overload
+def form_value(matrix: Sequence[Sequence[Real]], vector: Sequence[Real]) -> Real: ...
+@overload
+def form_value(matrix: Sequence[Sequence[Symbolic]], vector: Sequence[Symbolic]) -> Symbolic: ...
+def form_value(matrix: Sequence[Sequence[Symbolic]], vector: Sequence[Symbolic]) -> Symbolic:
     """The quadratic form r.M.r (11.7), (11.20)."""
     return dot(vector, apply(matrix, vector))
 

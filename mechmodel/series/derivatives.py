@@ -119,7 +119,7 @@ def polynomial_rate(coefficients: Sequence[Symbolic], t: Symbolic, derivative: i
     ``polynomial_derivative`` applied that many times. Plain operators: symbols give an
     expression."""
     d = inputs.count(derivative, "derivative")
-    current = list(coefficients)
+    current: Sequence[Symbolic] = list(coefficients)
     for _ in range(d):
         current = polynomial_derivative(current)
     return sum((c * t**k for k, c in enumerate(current)), 0)
