@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 import scipy.constants
@@ -38,6 +39,14 @@ def test_every_constant_is_sourced_and_consistent() -> None:
             assert old.edition != const.edition, key
             assert old.source.strip(), (key, old.edition)  # a dated value names where it is from
             assert len(old.edition) <= 20, (key, old.edition)  # a short name a claim can cite
+
+
+def test_no_source_names_a_path_of_one_machine() -> None:
+    """A source cites a document, or a file relative to the project, never an absolute path."""
+    absolute = re.compile(r"(?<![\w.])/(?:work|home|tmp|root|check|Users)/")
+    for key, const in constants().items():
+        for edition in const.editions:
+            assert not absolute.search(edition.source), (key, edition.edition, edition.source)
 
 
 def test_dates_are_years() -> None:
