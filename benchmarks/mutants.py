@@ -136,9 +136,18 @@ def _mutate(kind: str, node: ast.AST) -> ast.AST:
 
 
 def topic(path: str) -> str:
-    """A mutated module's topic, whose properties are ``checks/properties/test_<topic>.py``:
-    ``mechmodel/series.py`` and ``mechmodel/series/sums.py`` are both ``series``."""
+    """A mutated module's topic, whose properties are ``checks/properties/test_<topic>.py`` and
+    ``test_<topic>_*.py`` (``property_modules``): ``mechmodel/series.py`` and
+    ``mechmodel/series/sums.py`` are both ``series``."""
     return Path(Path(path).parts[1]).stem
+
+
+def property_modules(root: Path, mutated: str) -> list[Path]:
+    """The property modules of a mutated mechmodel module's topic: ``test_<topic>.py`` and,
+    where the topic's tests are split like its package, every ``test_<topic>_*.py``."""
+    folder = root / "checks" / "properties"
+    name = topic(mutated)
+    return sorted([*folder.glob(f"test_{name}.py"), *folder.glob(f"test_{name}_*.py")])
 
 
 def enumerate_mutants(root: Path, package: str = "mechmodel") -> list[Mutant]:
@@ -186,9 +195,7 @@ def run_tests(root: Path, book: str, timeout: float, mutated: str | None = None)
         if mutated is None:
             tests += ["checks/properties", *JUDGE_TESTS]
         else:
-            properties = root / "checks" / "properties" / f"test_{topic(mutated)}.py"
-            if properties.exists():
-                tests.append(str(properties.relative_to(root)))
+            tests += [str(path.relative_to(root)) for path in property_modules(root, mutated)]
     pytest = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider"]
     command = [*pytest, f"--book={book}", *dict.fromkeys(tests)]
     try:
