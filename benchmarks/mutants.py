@@ -49,7 +49,10 @@ JUDGE_TESTS = (
     "checks/test_comparison.py",
     "checks/test_verdict_rules.py",
     "checks/test_tokens.py",
-    "checks/test_evaluate.py",
+    "checks/test_evaluate_models.py",
+    "checks/test_evaluate_inputs.py",
+    "checks/test_evaluate_intervals.py",
+    "checks/test_evaluate_units.py",
     "checks/test_formulas.py",
     "checks/test_power.py",
     "checks/test_restatements.py",
@@ -204,6 +207,8 @@ def run_tests(root: Path, book: str, timeout: float, mutated: str | None = None)
         )
     except subprocess.TimeoutExpired:
         return "timeout"
+    if done.returncode in (4, 5):  # pytest's usage error (a missing test file) or no tests
+        raise SystemExit(f"pytest could not run {tests} (exit {done.returncode}): {done.stderr!r}")
     return "survived" if done.returncode == 0 else "killed"
 
 
