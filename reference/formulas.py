@@ -214,6 +214,7 @@ class Comparison:
 
 
 def _numeric(expr: sympy.Expr, point: Mapping[sympy.Symbol, float]) -> complex:
+    """``expr`` at ``point``, evaluated with 30 significant digits."""
     value = complex(expr.evalf(30, subs=dict(point)))
     if not (math.isfinite(value.real) and math.isfinite(value.imag)):
         raise FormulaError(f"{expr} is not finite at {point}")
@@ -233,16 +234,18 @@ def compare(
         difference = sympy.simplify(book.expr - model)
         if difference == 0:
             return Comparison(True, "symbolic")
+    nominal = {x.symbol: sympy.Rational(x.value) for x in book.literals}
+    partials = [
+        (sympy.diff(book.expr, lit.symbol).subs(nominal), float(lit.half_width))
+        for lit in book.literals
+    ]
     worst = 0.0
     for point in points:
         b = _numeric(book.nominal, point)
         m = _numeric(model, point) if isinstance(model, sympy.Expr) else complex(model(point))
         slack = REL_TOL * (abs(b) + abs(m)) + ABS_TOL
-        for lit in book.literals:
-            partial = sympy.diff(book.expr, lit.symbol).subs(
-                {x.symbol: sympy.Rational(x.value) for x in book.literals}
-            )
-            slack += abs(_numeric(partial, point)) * float(lit.half_width)
+        for partial, half_width in partials:
+            slack += abs(_numeric(partial, point)) * half_width
         worst = max(worst, abs(b - m) / slack)
     return Comparison(worst <= 1, "points", worst)
 
