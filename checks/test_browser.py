@@ -7,6 +7,7 @@ absent, except under ``CI=true``, where that is a failure (``.ci/run`` installs 
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 from collections.abc import Iterator
@@ -15,6 +16,8 @@ from typing import TYPE_CHECKING, NoReturn
 
 import pytest
 
+from reference.book import Book
+from reference.catalog import Catalog
 from reference.evaluation import Evaluation
 
 if TYPE_CHECKING:
@@ -159,17 +162,69 @@ def test_anchors_land_below_the_sticky_bar(
         assert target >= bottom - 1, (target, bottom)
 
 
-def test_no_accessibility_violations(browser_page: BrowserPage, report_dir: Path) -> None:
+# Chapters whose page holds every kind of element the report has: every verdict (rounding in 7,
+# dated constants in 4), formula claims, garbled numbers and dates (0), errata cards, figures
+AUDITED_CHAPTERS = ("0", "4", "7")
+
+
+@pytest.fixture(scope="module")
+def audited_report(book: Book, catalog: Catalog, tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The report of ``AUDITED_CHAPTERS``: the whole book's page repeats the same templates
+    fourteen times, and axe-core needs minutes for its 2,000 rows (its colour-contrast rule
+    measures every cell), seconds for these."""
+    from reference.evaluation import evaluate_catalog
+    from reference.scan import scan
+    from reports.outdir import write_report_dir
+    from reports.page import build_report
+
+    evaluation = evaluate_catalog(catalog, book, AUDITED_CHAPTERS)
+    files = build_report(evaluation, scan(book, catalog, AUDITED_CHAPTERS), catalog, None)
+    out = tmp_path_factory.mktemp("audited") / "out"
+    write_report_dir(out, files)
+    return out
+
+
+def test_the_audited_chapters_show_every_verdict(audited_report: Path) -> None:
+    text = (audited_report / "claims.json").read_text(encoding="utf-8")
+    verdicts = {c["verdict"] for c in json.loads(text)["claims"]}
+    kinds = {c["kind"] for c in json.loads(text)["claims"]}
+    assert verdicts == {"verified", "rounding", "erratum", "dated", "given"}
+    assert "formula" in kinds
+
+
+def test_no_accessibility_violations(browser_page: BrowserPage, audited_report: Path) -> None:
     """axe-core (the npm package's build, bundled by axe-playwright-python) finds no
     violation of WCAG 2 A/AA or best practice on the page: contrast, landmarks, names."""
     try:
         from axe_playwright_python.sync_playwright import Axe
     except ImportError:
         _unavailable("axe-playwright-python is not installed: pip install -e '.[test]'")
-    page, _ = browser_page
-    page.goto((report_dir / "index.html").as_uri())
-    violations = Axe().run(page).response["violations"]
+    page = browser_page[0].context.new_page()  # the shared page stays on the whole report
+    try:
+        page.goto((audited_report / "index.html").as_uri())
+        violations = Axe().run(page).response["violations"]
+    finally:
+        page.close()
     assert [(v["id"], v["impact"], len(v["nodes"])) for v in violations] == []
+
+
+def test_the_audit_sees_a_violation(browser_page: BrowserPage, tmp_path: Path) -> None:
+    """The same audit on a page with an image without a text alternative and grey on grey."""
+    from axe_playwright_python.sync_playwright import Axe
+
+    bad = tmp_path / "bad.html"
+    bad.write_text(
+        '<!doctype html><html lang="en"><title>t</title><main><img src="x.png">'
+        '<p style="color:#aaa;background:#bbb">faint</p></main></html>',
+        encoding="utf-8",
+    )
+    page = browser_page[0].context.new_page()
+    try:
+        page.goto(bad.as_uri())
+        found = {v["id"] for v in Axe().run(page).response["violations"]}
+    finally:
+        page.close()
+    assert {"image-alt", "color-contrast"} <= found
 
 
 @pytest.mark.parametrize("width", [390, 1400])
