@@ -138,11 +138,16 @@ def _mutate(kind: str, node: ast.AST) -> ast.AST:
     raise ValueError(kind)
 
 
+# modules whose properties live with the topic they came out of
+TOPIC_OF = {"tensor_forms": "collisions", "softcontact": "contact"}
+
+
 def topic(path: str) -> str:
     """A mutated module's topic, whose properties are ``checks/properties/test_<topic>.py`` and
     ``test_<topic>_*.py`` (``property_modules``): ``mechmodel/series.py`` and
-    ``mechmodel/series/sums.py`` are both ``series``."""
-    return Path(Path(path).parts[1]).stem
+    ``mechmodel/series/sums.py`` are both ``series``; ``TOPIC_OF`` names the exceptions."""
+    name = Path(Path(path).parts[1]).stem
+    return TOPIC_OF.get(name, name)
 
 
 def property_modules(root: Path, mutated: str) -> list[Path]:

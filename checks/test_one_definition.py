@@ -1,5 +1,6 @@
 """No public function or class of mechmodel is defined in two modules: the shared maths
-(``algebra``, ``planar``, ``ellipse``, ``numeric``) is defined once and imported, and a topic
+(``algebra``, ``planar``, ``ellipse``, ``numeric``, ``exact``, ``inputs``, ``typing``) is defined
+once and imported, and a topic
 module re-exports what the catalog names ``topic.function``."""
 
 from __future__ import annotations
@@ -8,7 +9,10 @@ import ast
 from collections import defaultdict
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).parents[1]
+pytestmark = pytest.mark.integrity
 
 
 def _is_overload(node: ast.stmt) -> bool:

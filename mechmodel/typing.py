@@ -22,7 +22,8 @@ say which of these a function accepts:
 A numerical model (an ODE run, a contour integral) returns an ``Estimate``: its value and a
 bound on its numerical error, both read by the evaluator. A model whose result is not monotonic
 in its inputs (a count that jumps) is marked ``@not_monotonic``: the evaluator then brackets a
-claim's rounded inputs on a grid, not at the corners of their box (design 3a).
+claim's rounded inputs on a grid (corners, centre and points between), not at the corners of
+their box alone (design 3a).
 """
 
 from __future__ import annotations

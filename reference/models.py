@@ -28,7 +28,7 @@ def resolve(name: str) -> Callable[..., Any]:
     A module's public functions are those its ``__all__`` lists, or, without one, those
     defined in mechmodel: its own and those it re-exports from the shared layer
     (``fields.line_angle`` from ``numeric``); a name it imports from elsewhere
-    (``bangs.dataclass``, ``fields.math``) is not a model."""
+    (``collisions.dataclass``, ``operators.math``) is not a model."""
     module_name, _, func_name = name.partition(".")
     try:
         module = importlib.import_module(f"mechmodel.{module_name}")

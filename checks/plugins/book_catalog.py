@@ -1,7 +1,8 @@
 """The book and the catalog: ``--book`` and ``--catalog``, validated once, and one test per claim.
 
-- ``--book PATH`` (else ``$BANGCHECK_BOOK``). Without a book, tests that read it skip with the
-  reason; under ``CI=true`` or when a path is given, a missing or wrong book is an error.
+- ``--book=PATH`` (else ``$BANGCHECK_BOOK``; with a space pytest takes the path for a test
+  path). Without a book, tests that read it skip with the reason; under ``CI=true`` or when a
+  path is given, a missing or wrong book is an error.
 - ``--catalog DIR``: a directory of draft ``chNN.toml`` files instead of the packaged catalog,
   as for the ``bangcheck`` command.
 - The catalog is read and validated once, as collection starts (under xdist the controller

@@ -21,6 +21,8 @@ and ``Fraction`` inputs, so that identities such as p.r = 1 can be checked exact
 names each function ``oscillators.function``: all are re-exported here.
 """
 
+from __future__ import annotations
+
 from mechmodel.oscillators.forms import (
     AxisEigenvalues,
     DualEllipse,

@@ -15,6 +15,8 @@ freely and the next touch is found exactly. Results carry their numerical error
 ``contact`` re-exports ``soft_collision``, ``SoftCollision`` and ``INTEGRATORS``.
 """
 
+from __future__ import annotations
+
 from mechmodel.softcontact.collision import INTEGRATORS, SoftCollision, soft_collision
 
 __all__ = ["INTEGRATORS", "SoftCollision", "soft_collision"]
