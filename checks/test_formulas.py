@@ -212,3 +212,15 @@ def test_a_malformed_formula_claim_is_a_catalog_problem(
     with pytest.raises(CatalogError) as raised:
         checked_catalog(book, _draft(tmp_path, FOCUS.replace(old, new)))
     assert [(p.id, p.field) for p in raised.value.problems] == [("ch09.f.focus", field)]
+
+
+def test_expansion_decides_polynomials_and_the_points_decide_the_rest() -> None:
+    x = sympy.Symbol("x", real=True)
+    symbols = {"x": x}
+    points = generic_points(symbols, {})
+    poly = compare(parse_formula("(x + 1)**2", symbols), x**2 + 2 * x + 1, points)
+    assert (poly.agrees, poly.how) == (True, "symbolic")
+    trig = compare(parse_formula("sin(x)**2 + cos(x)**2", symbols), sympy.Integer(1), points)
+    assert (trig.agrees, trig.how) == (True, "points")
+    wrong = compare(parse_formula("sin(x)**2 - cos(x)**2", symbols), sympy.Integer(1), points)
+    assert not wrong.agrees
