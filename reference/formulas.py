@@ -229,8 +229,9 @@ def compare(
 ) -> Comparison:
     """Whether the book's formula equals the model's: symbolically where both are expressions,
     the book has no decimal literal and their expanded difference is zero, else at ``points``,
-    within what the literals' half-widths can change (first order), a relative ``REL_TOL`` and an absolute ``ABS_TOL``
-    (far below any printed difference, far above the noise of 30-digit evaluation)."""
+    within what the literals' half-widths can change (first order), a relative ``REL_TOL`` and
+    an absolute ``ABS_TOL`` (far below any printed difference, far above the noise of 30-digit
+    evaluation)."""
     if isinstance(model, sympy.Expr) and not book.literals:
         difference = book.expr - model
         # expanding shows equal polynomials and products in milliseconds (every symbolic
