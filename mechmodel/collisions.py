@@ -20,13 +20,13 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Generic, cast, overload
 
 from mechmodel import inputs
 from mechmodel.ellipse import EnergyEllipse, kinetic_energy
 from mechmodel.ellipse import ellipse_radii as ellipse_radii  # the catalog's collisions.*
 from mechmodel.ellipse import energy_ellipse as energy_ellipse
+from mechmodel.exact import exact_sqrt
 from mechmodel.numeric import line_angle as line_angle
 from mechmodel.numeric import line_slope as line_slope
 from mechmodel.tensor_forms import TensorForms as TensorForms  # the catalog's collisions.*
@@ -304,21 +304,6 @@ def elastic_com_velocity(v_in: Real, v_fin: Real) -> Real:
 # -- lines, angles and the energy ellipse's form (Fig. 3.1, (3.6)-(3.7)) ----------------------
 
 
-def _sqrt(x: Real) -> Real:
-    """Square root of x >= 0: exact for a Fraction or int that is a perfect square."""
-    if isinstance(x, int | Fraction) and not isinstance(x, bool):
-        q = Fraction(x)
-        if q < 0:
-            raise ValueError(f"square root of a negative number {x!r}")
-        rn, rd = math.isqrt(q.numerator), math.isqrt(q.denominator)
-        if rn * rn == q.numerator and rd * rd == q.denominator:
-            return Fraction(rn, rd)
-        return math.sqrt(q)
-    if x < 0:
-        raise ValueError(f"square root of a negative number {x!r}")
-    return x**0.5
-
-
 def energy_ellipse_form(m1: Real, m2: Real, energy: Real, v1: Real, v2: Real) -> Real:
     """The left side V1^2/(2 KE/m1) + V2^2/(2 KE/m2) of the KE ellipse (3.7a) at the point
     (v1, v2): the kinetic energy of that point over ``energy`` = KE > 0, so 1 on the ellipse,
@@ -418,7 +403,7 @@ def collide_to_energy(
     ratio = (energy_after - kept) / available
     if ratio > 1:  # energy_after <= kept + available was checked: this is float rounding
         ratio = 1.0
-    e = _sqrt(ratio)
+    e = exact_sqrt(ratio)
     rebound = collide(m1, m2, v1, v2, e)
     u = frame.com_velocity
     through = (u + e * frame.velocities[0], u + e * frame.velocities[1])

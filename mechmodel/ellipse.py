@@ -19,32 +19,15 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import overload
 
 from mechmodel import inputs
+from mechmodel.exact import exact_sqrt
 from mechmodel.typing import Num, Real, Symbolic
 
 
 def _is_mp(x: object) -> bool:
     return type(x).__module__.startswith("mpmath")
-
-
-def _sqrt(x: Real) -> Real:
-    """Square root of x >= 0: exact for a Fraction or int that is a rational square."""
-    if x < 0:
-        raise ValueError(f"square root of a negative number {x!r}")
-    if isinstance(x, int | Fraction) and not isinstance(x, bool):
-        q = Fraction(x)
-        rn, rd = math.isqrt(q.numerator), math.isqrt(q.denominator)
-        if rn * rn == q.numerator and rd * rd == q.denominator:
-            return Fraction(rn, rd)
-        return math.sqrt(q)
-    if _is_mp(x):
-        import mpmath
-
-        return mpmath.sqrt(x)
-    return math.sqrt(x)
 
 
 @overload
@@ -67,7 +50,7 @@ def velocity_radius(mass: Real, energy: Real) -> Real:
     inputs.real(energy, "energy")
     if energy < 0:
         raise ValueError(f"a kinetic energy is not negative, got {energy!r}")
-    return _sqrt(2 * energy / mass)
+    return exact_sqrt(2 * energy / mass)
 
 
 def momentum_radius(mass: Real, energy: Real) -> Real:
@@ -77,7 +60,7 @@ def momentum_radius(mass: Real, energy: Real) -> Real:
     inputs.real(energy, "energy")
     if energy < 0:
         raise ValueError(f"a kinetic energy is not negative, got {energy!r}")
-    return _sqrt(2 * energy * mass)
+    return exact_sqrt(2 * energy * mass)
 
 
 def ellipse_radii(m1: Real, m2: Real, energy: Real) -> tuple[Real, Real]:

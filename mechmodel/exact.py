@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
+from typing import cast
 
 from mechmodel import inputs
 from mechmodel.typing import Real, Scalar
@@ -25,12 +26,27 @@ def magnitude(x: Scalar) -> Real:
     return abs(x)
 
 
+def all_rational(*values: object) -> bool:
+    """Whether every value is an ``int`` or a ``Fraction``."""
+    return all(isinstance(v, int | Fraction) for v in values)
+
+
+def exact_div(x: Real, y: Real) -> Real:
+    """x/y, exact (a ``Fraction``) when both are rational."""
+    return Fraction(x) / Fraction(y) if all_rational(x, y) else x / y
+
+
 def exact_sqrt(x: Real) -> Real:
     """The square root of x >= 0: an ``int`` for an int perfect square, a ``Fraction`` for a
-    Fraction whose numerator and denominator are perfect squares, else a float."""
+    Fraction whose numerator and denominator are perfect squares, an mpmath number for an
+    mpmath one (its precision kept), else a float."""
     inputs.real(x, "x")
     if x < 0:
         raise ValueError(f"no real square root of {x!r}")
+    if type(x).__module__.startswith("mpmath"):
+        import mpmath  # only where an mpmath number came in
+
+        return cast(Real, mpmath.sqrt(x))
     if isinstance(x, int):
         root = math.isqrt(x)
         if root * root == x:

@@ -26,18 +26,11 @@ from fractions import Fraction
 from typing import cast
 
 from mechmodel import inputs
+from mechmodel.exact import exact_div
 from mechmodel.typing import Real
 
 # a sample angular velocity, exact: I = L/w does not depend on it
 _SAMPLE_OMEGA = Fraction(7)
-
-
-def _rational(*values: object) -> bool:
-    return all(isinstance(v, int | Fraction) for v in values)
-
-
-def _div(x: Real, y: Real) -> Real:
-    return Fraction(x) / Fraction(y) if _rational(x, y) else x / y
 
 
 # -- a point mass on a circle (11.23)-(11.24) ---------------------------------------------------
@@ -64,7 +57,7 @@ def point_angular_momentum(mass: Real, radius: Real, omega: Real) -> Real:
 
 def point_inertia(mass: Real, radius: Real) -> Real:
     """Rotational inertia I = L/w, the factor that takes the place of m (after (11.24)): m r^2."""
-    return _div(point_angular_momentum(mass, radius, _SAMPLE_OMEGA), _SAMPLE_OMEGA)
+    return exact_div(point_angular_momentum(mass, radius, _SAMPLE_OMEGA), _SAMPLE_OMEGA)
 
 
 def inertia_energy(inertia: Real, omega: Real) -> Real:
@@ -73,7 +66,7 @@ def inertia_energy(inertia: Real, omega: Real) -> Real:
     1/2 m V^2 with V = w r."""
     inputs.positive(inertia, "inertia")
     unit = point_inertia(1, 1)
-    return rotation_energy(_div(inertia, unit), 1, omega)
+    return rotation_energy(exact_div(inertia, unit), 1, omega)
 
 
 # -- rods (11.25) -------------------------------------------------------------------------------
@@ -83,7 +76,7 @@ def rod_inertia_about_end(density: Real, length: Real) -> Real:
     inputs.positive(density, "density")
     inputs.positive(length, "length")
     n = 2  # dI = r^2 dm
-    return _div(density * length ** (n + 1), n + 1)
+    return exact_div(density * length ** (n + 1), n + 1)
 
 
 def rod_inertia_of_mass(mass: Real, length: Real) -> Real:
@@ -91,15 +84,15 @@ def rod_inertia_of_mass(mass: Real, length: Real) -> Real:
     the density rho = M/l."""
     inputs.mass(mass)
     inputs.positive(length, "length")
-    return rod_inertia_about_end(_div(mass, length), length)
+    return rod_inertia_about_end(exact_div(mass, length), length)
 
 
 def free_rod_inertia(mass: Real, half_length: Real) -> Real:
     """Inertia about the centre of a free rod of mass M and half-length l: two rods of mass M/2
     and length l welded end to end, each turning about its end (after (11.25)): M l^2/3."""
     inputs.mass(mass)
-    half = _div(mass, 2)
-    return 2 * rod_inertia_about_end(_div(half, half_length), half_length)
+    half = exact_div(mass, 2)
+    return 2 * rod_inertia_about_end(exact_div(half, half_length), half_length)
 
 
 @dataclass(frozen=True)
@@ -124,12 +117,12 @@ def rod_impulse(mass: Real, half_length: Real, impulse: Real, hit_height: Real) 
     inputs.positive(impulse, "impulse")
     inputs.positive(hit_height, "hit_height")
     inertia = free_rod_inertia(mass, half_length)
-    v = _div(impulse, mass)
+    v = exact_div(impulse, mass)
     spin_momentum = impulse * hit_height
-    w = _div(spin_momentum, inertia)
-    p = _div(v, w)
+    w = exact_div(spin_momentum, inertia)
+    p = exact_div(v, w)
     hp = hit_height * p
-    return ImpulseResponse(v, spin_momentum, w, p, hp, _div(hp, half_length**2))
+    return ImpulseResponse(v, spin_momentum, w, p, hp, exact_div(hp, half_length**2))
 
 
 def percussion_radius(half_length: Real, hit_height: Real) -> Real:
@@ -140,21 +133,23 @@ def percussion_radius(half_length: Real, hit_height: Real) -> Real:
 def percussion_fraction(half_length: Real, hit_divisor: Real) -> Real:
     """p/l for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/2 gives p = 2l/3)."""
     inputs.positive(hit_divisor, "hit_divisor")
-    return _div(percussion_radius(half_length, _div(half_length, hit_divisor)), half_length)
+    return exact_div(
+        percussion_radius(half_length, exact_div(half_length, hit_divisor)), half_length
+    )
 
 
 def percussion_radius_for_divisor(half_length: Real, hit_divisor: Real) -> Real:
     """Percussion radius p for a hit at h = l/``hit_divisor`` (text after Fig. 11.10: h = l/3
     gives p = l)."""
     inputs.positive(hit_divisor, "hit_divisor")
-    return percussion_radius(half_length, _div(half_length, hit_divisor))
+    return percussion_radius(half_length, exact_div(half_length, hit_divisor))
 
 
 def radius_of_gyration(rod_length: Real) -> float:
     """Radius of gyration sqrt(I/M) about the centre of a free rod of total length L = 2l:
     l/sqrt(3) (text after Fig. 11.10)."""
     inputs.positive(rod_length, "rod_length")
-    half = _div(rod_length, 2)
+    half = exact_div(rod_length, 2)
     return math.sqrt(free_rod_inertia(1, half))
 
 

@@ -22,8 +22,8 @@ from fractions import Fraction
 from typing import overload
 
 from mechmodel import inputs
-from mechmodel.exact import exact_sqrt, magnitude
-from mechmodel.oscillators._common import check_semi_axes, exact_div
+from mechmodel.exact import exact_div, exact_sqrt, magnitude
+from mechmodel.oscillators._common import check_semi_axes
 from mechmodel.planar import (
     Matrix,
     Vector,

@@ -12,8 +12,7 @@ from __future__ import annotations
 import math
 
 from mechmodel import inputs
-from mechmodel.exact import exact_sqrt
-from mechmodel.oscillators._common import exact_div
+from mechmodel.exact import exact_div, exact_sqrt
 from mechmodel.oscillators.orbit import orbit_derivative
 from mechmodel.typing import Real
 

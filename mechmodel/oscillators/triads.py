@@ -14,7 +14,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from mechmodel import inputs
-from mechmodel.oscillators._common import check_semi_axes, exact_div
+from mechmodel.exact import exact_div
+from mechmodel.oscillators._common import check_semi_axes
 from mechmodel.oscillators.forms import ellipse_form
 from mechmodel.planar import Vector, apply
 from mechmodel.typing import Real
