@@ -7,6 +7,7 @@ absent, except under ``CI=true``, where that is a failure (``.ci/run`` installs 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import os
 import shutil
@@ -168,17 +169,24 @@ AUDITED_CHAPTERS = ("0", "4", "7")
 
 
 @pytest.fixture(scope="module")
-def audited_report(book: Book, catalog: Catalog, tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """The report of ``AUDITED_CHAPTERS``: the whole book's page repeats the same templates
-    fourteen times, and axe-core needs minutes for its 2,000 rows (its colour-contrast rule
-    measures every cell), seconds for these."""
-    from reference.evaluation import evaluate_catalog
+def audited_report(
+    book: Book,
+    catalog: Catalog,
+    evaluation: Evaluation,
+    tmp_path_factory: pytest.TempPathFactory,
+) -> Path:
+    """The report of ``AUDITED_CHAPTERS``, from the session's evaluation: the whole book's page
+    repeats the same templates fourteen times, and axe-core needs minutes for its 2,000 rows
+    (its colour-contrast rule measures every cell), seconds for these."""
     from reference.scan import scan
     from reports.outdir import write_report_dir
     from reports.page import build_report
 
-    evaluation = evaluate_catalog(catalog, book, AUDITED_CHAPTERS)
-    files = build_report(evaluation, scan(book, catalog, AUDITED_CHAPTERS), catalog, None)
+    claims = tuple(c for c in evaluation if c.chapter in AUDITED_CHAPTERS)
+    ids = {c.id for c in claims}
+    misprints = {k: v for k, v in evaluation.misprints.items() if k in ids}
+    chapters = dataclasses.replace(evaluation, claims=claims, misprints=misprints)
+    files = build_report(chapters, scan(book, catalog, AUDITED_CHAPTERS), catalog, None)
     out = tmp_path_factory.mktemp("audited") / "out"
     write_report_dir(out, files)
     return out
