@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+from collections.abc import Callable
+from multiprocessing.connection import Connection
 from pathlib import Path
 
 import pytest
@@ -43,6 +45,49 @@ def test_concurrent_runs_leave_one_good_report_and_no_debris(tmp_path: Path) -> 
     assert set(written) == {*FILES, MANIFEST}
     tags = {text.split(":", 1)[0] for name, text in written.items() if name != MANIFEST}
     assert len(tags) == 1  # all three files from one run, never a mix
+
+
+def _write_and_say(out: str, go: Connection, said: Connection) -> None:
+    go.recv()
+    try:
+        write_report_dir(Path(out), {"index.html": "mine\n"}, log=said.send)
+    except outdir.OutputError as err:
+        said.send(f"refused: {err}")
+        os._exit(1)
+
+
+def _check_now_and_say(out: str, go: Connection, said: Connection) -> None:
+    go.recv()
+    try:
+        outdir.check_target_now(Path(out), log=said.send)
+    except outdir.OutputError as err:
+        said.send(f"refused: {err}")
+        os._exit(1)
+
+
+@pytest.mark.parametrize("run", [_write_and_say, _check_now_and_say], ids=["write", "cli-check"])
+def test_a_run_judges_the_directory_only_under_the_lock(
+    tmp_path: Path, run: Callable[[str, Connection, Connection], None]
+) -> None:
+    """While another run holds the lock, the directory may look foreign (a listing caught
+    between that run's two renames): a run waits for the lock before judging it, here with a
+    stray file that the lock's holder removes before it lets go."""
+    out = tmp_path / "out"
+    write_report_dir(out, FILES, log=lambda m: None)
+    context = multiprocessing.get_context("fork")
+    go_end, go = context.Pipe(duplex=False)
+    listen, said = context.Pipe(duplex=False)
+    child = context.Process(target=run, args=(str(out), go_end, said))
+    child.start()  # before the lock is taken, so that the child holds no copy of it
+    with outdir.locked(tmp_path):
+        (out / "half-listed").write_text("x", encoding="utf-8")
+        go.send("go")
+        spoke = listen.poll(30)
+        first = listen.recv() if spoke else "nothing within 30 s"
+        (out / "half-listed").unlink()
+    child.join(timeout=60)
+    assert first.startswith("waiting for another report"), first
+    assert child.exitcode == 0
 
 
 def _die_between_the_renames(out: str) -> None:

@@ -34,7 +34,7 @@ from reports.invariants import (
     default_properties_path,
     read_properties,
 )
-from reports.outdir import OutputError, check_target, shown, write_report_dir
+from reports.outdir import OutputError, check_target_now, shown, write_report_dir
 from reports.views import printed_shown
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
@@ -373,7 +373,7 @@ def _report(args: argparse.Namespace) -> int:
     from reports.page import build_report
 
     out = _output_path(args.out)
-    check_target(out)  # before the work: a refused directory is said at once
+    check_target_now(out)  # before the work: a refused directory is said at once
     properties = _invariants(args.properties)
     book = load_book(book_path(args.book))
     catalog = checked_catalog(book, args.catalog)

@@ -11,8 +11,9 @@ The files are written into ``.NAME.new-*`` beside the target (the manifest first
 replaces the target in two renames; the old report, moved to ``.NAME.old-*``, is checked once
 more and removed file by file (the manifest last), never as a tree, so that a file that appeared
 in it meanwhile stops the removal instead of going with it. All of this happens under an
-exclusive ``flock`` on the parent directory, so that two runs into one place take turns; under
-the lock, what a run that crashed left is cleaned up first (``recover``). Every failure is an
+exclusive ``flock`` on the parent directory, so that two runs into one place take turns, and
+each judges the target only under it (a listing caught between another run's two renames would
+look foreign); under the lock, what a run that crashed left is cleaned up first (``recover``). Every failure is an
 ``OutputError`` with a one-line message, and leaves the previous report as it was.
 """
 
@@ -205,6 +206,16 @@ def check_target(out: Path) -> None:
             )
 
 
+def check_target_now(out: Path, log: Log = _stderr) -> None:
+    """``check_target`` as a run's first word: under the lock where ``out``'s parent exists,
+    so that another run's report being swapped in is not mistaken for foreign files."""
+    if not out.parent.is_dir():
+        check_target(out)
+        return
+    with locked(out.parent, log):
+        check_target(out)
+
+
 @contextlib.contextmanager
 def locked(directory: Path, log: Log = _stderr) -> Iterator[None]:
     """An exclusive ``flock`` on ``directory``'s own descriptor for the block: no lock file is
@@ -356,7 +367,12 @@ def _make_parents(directory: Path) -> list[Path]:
         directory = directory.parent
     made = []
     for path in reversed(missing):
-        path.mkdir()
+        try:
+            path.mkdir()
+        except FileExistsError:
+            if not path.is_dir():
+                raise
+            continue  # another run made it meanwhile: theirs, not ours to remove
         made.append(path)
     return made
 
@@ -371,14 +387,17 @@ def write_report_dir(out: Path, files: Mapping[str, str | bytes], log: Log = _st
     out = Path(os.path.abspath(out))
     if any("/" in name or name in ("", ".", "..", MANIFEST) for name in files):
         raise ValueError(f"report file names must be plain names: {sorted(files)}")
-    check_target(out)
+    if not out.parent.is_dir():
+        check_target(out)  # before making its parents (no other run is in there yet)
     staging: Path | None = None
     made: list[Path] = []
     try:
         made = _make_parents(out.parent)
         with locked(out.parent, log):
             recover(out, log)
-            check_target(out)  # again, under the lock: another run may have been first
+            # judged under the lock only: a run swapping its report in meanwhile would show
+            # this one a directory half listed, or gone between its stat and its listing
+            check_target(out)
             mode = out.stat().st_mode if out.is_dir() else _default_mode()
             staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
             _write_staging(staging, files)
