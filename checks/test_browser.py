@@ -134,17 +134,37 @@ def test_the_search_reads_the_quote_and_hides_empty_chapters(browser_page: Brows
     assert page.is_hidden("#no-matches")
 
 
-@pytest.mark.parametrize("width", [390, 1400])
-def test_the_page_fits_its_width_and_shows_no_python(browser_page: BrowserPage, width: int) -> None:
-    """No horizontal overflow on a phone (390 px) or a wide screen (1,400 px): wide tables
-    scroll inside the page; no Python repr ("None", "[1.0, 2.0]") in the text."""
+@pytest.fixture(scope="class", params=[390, 1400])
+def page_at_width(
+    browser_page: BrowserPage, request: pytest.FixtureRequest
+) -> Iterator[tuple[Page, int]]:
+    """The shared page at a phone's and a wide screen's width (each test of the class at both,
+    grouped by width: on the 2,000-row page every change of width is a relayout of a second)."""
     page, _ = browser_page
+    width: int = request.param
     page.set_viewport_size({"width": width, "height": 900})
-    assert page.evaluate("document.documentElement.scrollWidth") <= width
-    words = page.evaluate("document.body.innerText").split()
-    assert "None" not in words
-    assert "nan" not in words
+    yield page, width
     page.set_viewport_size({"width": 1280, "height": 900})
+
+
+class TestAtWidth:
+    def test_the_page_fits_its_width_and_shows_no_python(
+        self, page_at_width: tuple[Page, int]
+    ) -> None:
+        """No horizontal overflow on a phone (390 px) or a wide screen (1,400 px): wide tables
+        scroll inside the page; no Python repr ("None", "[1.0, 2.0]") in the text."""
+        page, width = page_at_width
+        assert page.evaluate("document.documentElement.scrollWidth") <= width
+        words = page.evaluate("document.body.innerText").split()
+        assert "None" not in words
+        assert "nan" not in words
+
+    def test_screenshot(self, page_at_width: tuple[Page, int], report_dir: Path) -> None:
+        page, width = page_at_width
+        path = report_dir / f"screenshot-{width}.png"
+        page.screenshot(path=str(path), full_page=False)
+        assert path.stat().st_size > 10_000
+        print(f"screenshot: {path}")
 
 
 @pytest.mark.parametrize("anchor", ["claim-ch08.tower-100-30-10.v3", "errata", "power"])
@@ -233,14 +253,3 @@ def test_the_audit_sees_a_violation(browser_page: BrowserPage, tmp_path: Path) -
     finally:
         page.close()
     assert {"image-alt", "color-contrast"} <= found
-
-
-@pytest.mark.parametrize("width", [390, 1400])
-def test_screenshot(browser_page: BrowserPage, report_dir: Path, width: int) -> None:
-    page, _ = browser_page
-    page.set_viewport_size({"width": width, "height": 900})
-    path = report_dir / f"screenshot-{width}.png"
-    page.screenshot(path=str(path), full_page=False)
-    page.set_viewport_size({"width": 1280, "height": 900})
-    assert path.stat().st_size > 10_000
-    print(f"screenshot: {path}")

@@ -10,6 +10,7 @@ keys. Files are written atomically, and only for a catalog that validates.
 from __future__ import annotations
 
 import difflib
+import functools
 import os
 import tempfile
 from collections.abc import Iterable
@@ -73,8 +74,10 @@ TABLES = {
 }
 
 
+@functools.cache
 def _defaults(model: type[Any]) -> dict[str, Any]:
-    """The schema's default of each field that has one (None fields are simply absent)."""
+    """The schema's default of each field that has one (None fields are simply absent); one
+    dictionary per model, which the caller reads and never changes."""
     out = {}
     for name, field in model.model_fields.items():
         if field.is_required():

@@ -7,6 +7,7 @@ longitudinal part grad Phi and a transverse part curl A. Exact polynomials
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -74,7 +75,14 @@ class _NonAnalyticPolys:
 def _conjugate_power_polys(strength_re: Real, strength_im: Real, power: int) -> _NonAnalyticPolys:
     """Sources, potentials and fields of f = k (z*)^n as exact polynomials (10.46)-(10.56)."""
     n = inputs.count(power, "power")
-    k = Gaussian(Fraction(strength_re), Fraction(strength_im))
+    return _exact_polys(Fraction(strength_re), Fraction(strength_im), n)
+
+
+@functools.lru_cache(maxsize=64)
+def _exact_polys(strength_re: Fraction, strength_im: Fraction, n: int) -> _NonAnalyticPolys:
+    """``_conjugate_power_polys`` for an exact k, computed once per (k, n): a field is
+    evaluated at many points, and the polynomials' algebra costs milliseconds."""
+    k = Gaussian(strength_re, strength_im)
     factors = source_field_factors()
     f_z = Laurent.term(k, **{ZSTAR: n})  # in z, z*
     # f* of real x, y: conjugate the coefficients and swap z and z*
