@@ -71,6 +71,8 @@ def pytest_terminal_summary(
     terminalreporter: pytest.TerminalReporter, exitstatus: int, config: pytest.Config
 ) -> Generator[None]:
     result = yield
+    if config.option.collectonly:
+        return result  # nothing was judged (and evaluating the catalog to say so takes seconds)
     counts = config.stash.get(keys.WORKER_VERDICTS, None)
     if counts is None and keys.CATALOG not in config.stash:
         return result  # the catalog was refused at collection: the usage error says why
