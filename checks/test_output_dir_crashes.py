@@ -77,17 +77,24 @@ def test_a_run_judges_the_directory_only_under_the_lock(
     context = multiprocessing.get_context("fork")
     go_end, go = context.Pipe(duplex=False)
     listen, said = context.Pipe(duplex=False)
-    child = context.Process(target=run, args=(str(out), go_end, said))
+    child = context.Process(target=run, args=(str(out), go_end, said), daemon=True)
     child.start()  # before the lock is taken, so that the child holds no copy of it
-    with outdir.locked(tmp_path):
-        (out / "half-listed").write_text("x", encoding="utf-8")
-        go.send("go")
-        spoke = listen.poll(30)
-        first = listen.recv() if spoke else "nothing within 30 s"
-        (out / "half-listed").unlink()
-    child.join(timeout=60)
+    try:
+        with outdir.locked(tmp_path):
+            (out / "half-listed").write_text("x", encoding="utf-8")
+            go.send("go")
+            spoke = listen.poll(30)
+            first = listen.recv() if spoke else "nothing within 30 s"
+            (out / "half-listed").unlink()
+        child.join(timeout=60)
+    finally:
+        if child.is_alive():  # a failure above must not leave the session waiting for it
+            child.kill()
+            child.join()
     assert first.startswith("waiting for another report"), first
     assert child.exitcode == 0
+    if run is _write_and_say:
+        assert (out / "index.html").read_text(encoding="utf-8") == "mine\n"
 
 
 def _die_between_the_renames(out: str) -> None:

@@ -234,6 +234,18 @@ def test_the_check_is_made_again_under_the_lock(
     assert written == []  # refused before any file was written
 
 
+def test_a_refusal_leaves_an_earlier_runs_leftovers_too(tmp_path: Path) -> None:
+    """A refused target is judged before the clean-up of what a crashed run left beside it:
+    "nothing was changed" holds for those leftovers as well."""
+    out = tmp_path / "out"
+    before = a_user_directory(out)
+    (tmp_path / ".out.new-abc").mkdir()  # an empty staging directory, a crash's
+    with pytest.raises(OutputError, match="nothing was changed"):
+        write_report_dir(out, FILES, log=lambda m: None)
+    assert sorted(os.listdir(tmp_path)) == [".out.new-abc", "out"]
+    assert tree(out) == before
+
+
 def test_the_root_is_refused() -> None:
     with pytest.raises(OutputError, match="root directory"):
         check_target(Path("/"))

@@ -109,3 +109,46 @@ def test_parents_made_for_a_failed_write_are_removed(
     with pytest.raises(OutputError, match="No space left"):
         write_report_dir(tmp_path / "a" / "b" / "out", FILES, log=lambda m: None)
     assert os.listdir(tmp_path) == []
+
+
+def test_parents_made_by_another_run_meanwhile_are_theirs(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Another run makes ``a`` between this run's look and its ``mkdir``: this run goes on, and
+    when its write fails it removes only the parent it made itself (``b``), not theirs."""
+    real = Path.mkdir
+
+    def raced(self: Path, *args: object, **kwargs: object) -> None:
+        if self == tmp_path / "a" and not self.exists():
+            real(self)  # the other run's
+            raise FileExistsError(errno.EEXIST, os.strerror(errno.EEXIST), str(self))
+        real(self)
+
+    def fail(*args: object, **kwargs: object) -> None:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(tmp_path))
+
+    monkeypatch.setattr(Path, "mkdir", raced)
+    monkeypatch.setattr(tempfile, "mkdtemp", fail)
+    with pytest.raises(OutputError, match="No space left"):
+        write_report_dir(tmp_path / "a" / "b" / "out", FILES, log=lambda m: None)
+    assert os.listdir(tmp_path) == ["a"]
+    assert os.listdir(tmp_path / "a") == []
+
+
+def test_a_parent_that_cannot_be_locked_is_one_line_before_any_work(
+    tmp_path: Path, book: Book, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A parent that cannot be opened to lock it (searchable but not readable): the command's
+    first check says so in one line, exit 2, before it evaluates anything."""
+
+    def unopenable(directory: Path, log: object = None) -> None:  # as os.open would fail
+        raise PermissionError(errno.EACCES, os.strerror(errno.EACCES), str(directory))
+
+    monkeypatch.setattr(outdir, "locked", unopenable)
+    monkeypatch.setattr("reports.cli.evaluate_catalog", lambda *a, **k: pytest.fail("evaluated"))
+    code, err = report(capsys, book, tmp_path / "out")
+    assert code == 2
+    assert err.splitlines() == [
+        f"bangcheck: error: cannot write the report to {tmp_path / 'out'}: Permission denied "
+        f"({tmp_path}); the previous report, if any, is unchanged"
+    ]

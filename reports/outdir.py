@@ -213,8 +213,11 @@ def check_target_now(out: Path, log: Log = _stderr) -> None:
     if not out.parent.is_dir():
         check_target(out)
         return
-    with locked(out.parent, log):
-        check_target(out)
+    try:
+        with locked(out.parent, log):
+            check_target(out)
+    except OSError as err:  # the parent cannot be opened to lock it
+        raise _unwritable(out, err) from err
 
 
 @contextlib.contextmanager
@@ -378,6 +381,18 @@ def _make_parents(directory: Path) -> list[Path]:
     return made
 
 
+def _unwritable(out: Path, err: OSError) -> OutputError:
+    """The one-line error of a write (or its lock) that failed with ``err``."""
+    where = shown(err.filename or out)
+    reason = "read-only file system" if err.errno == errno.EROFS else err.strerror or err
+    if err.errno == errno.EBUSY:
+        reason = "device or resource busy (a mount point cannot be replaced)"
+    return OutputError(
+        f"cannot write the report to {shown(out)}: {reason} ({where}); the previous "
+        "report, if any, is unchanged"
+    )
+
+
 def write_report_dir(out: Path, files: Mapping[str, str | bytes], log: Log = _stderr) -> None:
     """Make ``out`` a directory holding exactly ``files`` (name to content) and the manifest.
 
@@ -395,10 +410,11 @@ def write_report_dir(out: Path, files: Mapping[str, str | bytes], log: Log = _st
     try:
         made = _make_parents(out.parent)
         with locked(out.parent, log):
-            recover(out, log)
             # judged under the lock only: a run swapping its report in meanwhile would show
-            # this one a directory half listed, or gone between its stat and its listing
+            # this one a directory half listed, or gone between its stat and its listing; and
+            # before the clean-up, so that a refusal changes nothing
             check_target(out)
+            recover(out, log)
             mode = out.stat().st_mode if out.is_dir() else _default_mode()
             staging = Path(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
             _write_staging(staging, files)
@@ -406,14 +422,7 @@ def write_report_dir(out: Path, files: Mapping[str, str | bytes], log: Log = _st
             _swap_in(staging, out, log)
             staging = None
     except OSError as err:
-        where = shown(err.filename or out)
-        reason = "read-only file system" if err.errno == errno.EROFS else err.strerror or err
-        if err.errno == errno.EBUSY:
-            reason = "device or resource busy (a mount point cannot be replaced)"
-        raise OutputError(
-            f"cannot write the report to {shown(out)}: {reason} ({where}); the previous "
-            "report, if any, is unchanged"
-        ) from err
+        raise _unwritable(out, err) from err
     finally:
         if staging is not None and staging.is_dir():
             with contextlib.suppress(OSError):
