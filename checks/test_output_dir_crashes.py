@@ -47,27 +47,25 @@ def test_concurrent_runs_leave_one_good_report_and_no_debris(tmp_path: Path) -> 
     assert len(tags) == 1  # all three files from one run, never a mix
 
 
-def _write_and_say(out: str, go: Connection, said: Connection) -> None:
+def _write_mine(out: Path, log: outdir.Log) -> None:
+    write_report_dir(out, {"index.html": "mine\n"}, log=log)
+
+
+def _say_after_go(
+    act: Callable[[Path, outdir.Log], None], out: str, go: Connection, said: Connection
+) -> None:
+    """In the child: wait for the word, then ``act`` on ``out``, saying each log line."""
     go.recv()
     try:
-        write_report_dir(Path(out), {"index.html": "mine\n"}, log=said.send)
+        act(Path(out), said.send)
     except outdir.OutputError as err:
         said.send(f"refused: {err}")
         os._exit(1)
 
 
-def _check_now_and_say(out: str, go: Connection, said: Connection) -> None:
-    go.recv()
-    try:
-        outdir.check_target_now(Path(out), log=said.send)
-    except outdir.OutputError as err:
-        said.send(f"refused: {err}")
-        os._exit(1)
-
-
-@pytest.mark.parametrize("run", [_write_and_say, _check_now_and_say], ids=["write", "cli-check"])
+@pytest.mark.parametrize("act", [_write_mine, outdir.check_target_now], ids=["write", "cli-check"])
 def test_a_run_judges_the_directory_only_under_the_lock(
-    tmp_path: Path, run: Callable[[str, Connection, Connection], None]
+    tmp_path: Path, act: Callable[[Path, outdir.Log], None]
 ) -> None:
     """While another run holds the lock, the directory may look foreign (a listing caught
     between that run's two renames): a run waits for the lock before judging it, here with a
@@ -77,7 +75,7 @@ def test_a_run_judges_the_directory_only_under_the_lock(
     context = multiprocessing.get_context("fork")
     go_end, go = context.Pipe(duplex=False)
     listen, said = context.Pipe(duplex=False)
-    child = context.Process(target=run, args=(str(out), go_end, said), daemon=True)
+    child = context.Process(target=_say_after_go, args=(act, str(out), go_end, said), daemon=True)
     child.start()  # before the lock is taken, so that the child holds no copy of it
     try:
         with outdir.locked(tmp_path):
@@ -93,7 +91,7 @@ def test_a_run_judges_the_directory_only_under_the_lock(
             child.join()
     assert first.startswith("waiting for another report"), first
     assert child.exitcode == 0
-    if run is _write_and_say:
+    if act is _write_mine:
         assert (out / "index.html").read_text(encoding="utf-8") == "mine\n"
 
 

@@ -70,19 +70,23 @@ def test_a_previous_report_with_something_added_is_refused(tmp_path: Path, added
     assert tree(out) == before
 
 
-def test_a_manifest_that_is_not_ours_vouches_for_nothing(tmp_path: Path) -> None:
+@pytest.mark.parametrize(
+    ("manifest", "users_file"),
+    [
+        ("index.html\nthesis.txt\n", "thesis.txt"),  # no header at all
+        ("# my notes\nthesis.txt\n", "thesis.txt"),  # another header
+        (manifest_text(["../thesis.txt"]), None),  # ours in form, naming a path outside
+    ],
+    ids=["headerless", "another-header", "path-outside"],
+)
+def test_a_manifest_that_is_not_ours_vouches_for_nothing(
+    tmp_path: Path, manifest: str, users_file: str | None
+) -> None:
     out = tmp_path / "out"
     out.mkdir()
-    (out / MANIFEST).write_text("index.html\nthesis.txt\n", encoding="utf-8")
-    (out / "thesis.txt").write_text("t", encoding="utf-8")
-    with pytest.raises(OutputError, match="did not write"):
-        check_target(out)
-
-
-def test_a_manifest_naming_a_path_outside_is_not_ours(tmp_path: Path) -> None:
-    out = tmp_path / "out"
-    out.mkdir()
-    (out / MANIFEST).write_text(manifest_text(["../thesis.txt"]), encoding="utf-8")
+    (out / MANIFEST).write_text(manifest, encoding="utf-8")
+    if users_file is not None:
+        (out / users_file).write_text("t", encoding="utf-8")
     with pytest.raises(OutputError, match="did not write"):
         check_target(out)
 
@@ -249,15 +253,6 @@ def test_a_refusal_leaves_an_earlier_runs_leftovers_too(tmp_path: Path) -> None:
 def test_the_root_is_refused() -> None:
     with pytest.raises(OutputError, match="root directory"):
         check_target(Path("/"))
-
-
-def test_a_manifest_with_another_header_is_not_ours(tmp_path: Path) -> None:
-    out = tmp_path / "out"
-    out.mkdir()
-    (out / MANIFEST).write_text("# my notes\nthesis.txt\n", encoding="utf-8")
-    (out / "thesis.txt").write_text("t", encoding="utf-8")
-    with pytest.raises(OutputError, match="did not write"):
-        check_target(out)
 
 
 def test_names_that_would_break_a_message_are_quoted(tmp_path: Path) -> None:
