@@ -13,9 +13,9 @@ more and removed file by file (the manifest last), never as a tree, so that a fi
 in it meanwhile stops the removal instead of going with it. All of this happens under an
 exclusive ``flock`` on the parent directory, so that two runs into one place take turns, and
 each judges the target only under it (a listing caught between another run's two renames would
-look foreign); under the lock, what a run that crashed left is cleaned up first
-(``recover``). Every failure is an ``OutputError`` with a one-line message, and leaves the
-previous report as it was.
+look foreign); under the lock, once the target is admitted, what a run that crashed left is
+cleaned up (``recover``) before anything is written. Every failure is an ``OutputError`` with a
+one-line message, and leaves the previous report as it was.
 """
 
 from __future__ import annotations
