@@ -23,7 +23,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
-from functools import cache
+from functools import cache, cached_property
 from typing import Any
 
 import sympy
@@ -87,9 +87,10 @@ class Formula:
     expr: sympy.Expr
     literals: tuple[Literal, ...]
 
-    @property
+    @cached_property
     def nominal(self) -> sympy.Expr:
-        """The expression with each decimal literal at its printed value."""
+        """The expression with each decimal literal at its printed value (computed once: a
+        comparison evaluates it at every generic point)."""
         return self.expr.subs({lit.symbol: sympy.Rational(lit.value) for lit in self.literals})
 
 
@@ -166,12 +167,18 @@ class _Reader(ast.NodeVisitor):
 
 def parse_formula(text: str, symbols: Mapping[str, sympy.Symbol]) -> Formula:
     """Read ``text`` into a ``Formula`` over ``symbols``; ``FormulaError`` for anything else
-    (the text is never evaluated: its syntax tree is walked)."""
+    (the text is never evaluated: its syntax tree is walked). Read once per text and symbols:
+    validation and evaluation read the same formulas."""
+    return _parsed(text, tuple(sorted(symbols.items())))
+
+
+@cache
+def _parsed(text: str, symbols: tuple[tuple[str, sympy.Symbol], ...]) -> Formula:
     try:
         tree = ast.parse(text.strip(), mode="eval")
     except SyntaxError as err:
         raise FormulaError(f"not a formula: {text!r} ({err.msg})") from err
-    reader = _Reader(text.strip(), symbols)
+    reader = _Reader(text.strip(), dict(symbols))
     expr = reader.read(tree)
     return Formula(text, sympy.sympify(expr), tuple(reader.literals))
 
