@@ -111,14 +111,18 @@ def test_a_relative_path_is_made_absolute(monkeypatch: pytest.MonkeyPatch) -> No
         (" 08 - 09 ", ("8", "9")),
         ("12-a1", ("12", "A1")),
         (None, tuple(c.key for c in identity().chapters)),
+        (["7", "0", "04"], ("0", "4", "7")),
+        (("0-2", "a1"), ("0", "1", "2", "A1")),
     ],
 )
-def test_chapter_specs(spec: str | None, keys: tuple[str, ...]) -> None:
+def test_chapter_specs(
+    spec: str | list[str] | tuple[str, ...] | None, keys: tuple[str, ...]
+) -> None:
     assert chapter_keys(spec) == keys
 
 
-@pytest.mark.parametrize("spec", ["13", "3-1", "x", "1-B2", "", "  ", "4,", "-3"])
-def test_bad_chapter_specs(spec: str) -> None:
+@pytest.mark.parametrize("spec", ["13", "3-1", "x", "1-B2", "", "  ", "4,", "-3", [], ["4", ""]])
+def test_bad_chapter_specs(spec: str | list[str]) -> None:
     with pytest.raises(ValueError, match="chapter"):
         chapter_keys(spec)
 

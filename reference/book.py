@@ -11,7 +11,7 @@ import bisect
 import hashlib
 import os
 import stat
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from functools import cache
 from importlib.resources import files
@@ -215,8 +215,9 @@ def load_book(path: Path) -> Book:
     return Book(path, lines, ident)
 
 
-def chapter_keys(spec: str | None) -> tuple[str, ...]:
-    """The chapter keys selected by a ``--chapter`` spec ("8", "0-3", "4,5", "A1"; None: all).
+def chapter_keys(spec: str | Iterable[str] | None) -> tuple[str, ...]:
+    """The chapter keys selected by a ``--chapter`` spec ("8", "0-3", "4,5", "A1"; None: all),
+    or by several specs (["0", "4", "7"], as ``evaluate`` may be given them from Python).
 
     Leading zeros and the case of "A1" do not matter ("04", "a1"). Raises ``ValueError`` naming
     the part of the spec it cannot read, or for an empty spec.
@@ -224,6 +225,8 @@ def chapter_keys(spec: str | None) -> tuple[str, ...]:
     keys = [c.key for c in identity().chapters]
     if spec is None:
         return tuple(keys)
+    if not isinstance(spec, str):
+        spec = ",".join(spec)
     if not spec.strip():
         raise ValueError(f"empty chapter spec: give e.g. 8, 0-3, 4,5 or A1 (chapters {keys})")
     chosen: list[str] = []

@@ -14,7 +14,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import sys
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
@@ -436,11 +436,12 @@ def evaluate_catalog(
 
 
 def evaluate(
-    book: str | None = None, chapters: str | None = None, progress: bool = False
+    book: str | None = None, chapters: str | Iterable[str] | None = None, progress: bool = False
 ) -> Evaluation:
     """Evaluate the catalog against the book at ``book`` (else ``$BANGCHECK_BOOK``).
 
-    ``chapters`` is a chapter spec ("8", "0-3", "4,5", "A1"). Raises ``BookError`` for a missing
+    ``chapters`` is a chapter spec ("8", "0-3", "4,5", "A1") or several (["0", "4", "7"]); None
+    for the whole book. Raises ``BookError`` for a missing
     or wrong book, ``CatalogError`` for an invalid catalog and ``ModelCallError`` where a model
     cannot be called as catalogued.
     """
