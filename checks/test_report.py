@@ -293,7 +293,7 @@ def test_the_report_finds_the_tests_record_from_the_working_directory_up(
     monkeypatch.chdir(tmp_path / "sub" / "deeper")
     assert default_properties_path() == record
     out = tmp_path / "out"
-    assert main(["report", "--book", str(book.path), "--chapter", "A1", "--out", str(out)]) == 0
+    assert main(["report", "--book", str(book.path), "--chapter", "0", "--out", str(out)]) == 0
     capsys.readouterr()
     assert "P is conserved" in (out / "index.html").read_text(encoding="utf-8")
     assert sorted(os.listdir(tmp_path / ".bangcheck")) == [".gitignore", "properties.json"]
@@ -302,7 +302,7 @@ def test_the_report_finds_the_tests_record_from_the_working_directory_up(
 def test_a_missing_record_given_by_name_is_a_clear_error(
     book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    argv = ["report", "--book", str(book.path), "--chapter", "A1", "--out", str(tmp_path / "o")]
+    argv = ["report", "--book", str(book.path), "--chapter", "0", "--out", str(tmp_path / "o")]
     assert main([*argv, "--properties", str(tmp_path / "typo.json")]) == 2
     assert capsys.readouterr().err == (
         f"bangcheck: error: --properties {tmp_path / 'typo.json'}: no such file\n"
@@ -315,7 +315,7 @@ def test_an_unreadable_default_record_is_a_warning(
     (tmp_path / ".bangcheck").mkdir()
     (tmp_path / ".bangcheck" / "properties.json").write_text("{broken", encoding="utf-8")
     monkeypatch.chdir(tmp_path)
-    argv = ["report", "--book", str(book.path), "--chapter", "A1", "--out", str(tmp_path / "o")]
+    argv = ["report", "--book", str(book.path), "--chapter", "0", "--out", str(tmp_path / "o")]
     assert main(argv) == 0
     assert "warning: cannot read the invariants record" in capsys.readouterr().err
 
@@ -325,7 +325,7 @@ def test_a_record_that_is_not_one_is_a_clear_error(
 ) -> None:
     bad = tmp_path / "properties.json"
     bad.write_text("{not json", encoding="utf-8")
-    argv = ["report", "--book", str(book.path), "--chapter", "A1", "--out", str(tmp_path / "o")]
+    argv = ["report", "--book", str(book.path), "--chapter", "0", "--out", str(tmp_path / "o")]
     assert main([*argv, "--properties", str(bad)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1
