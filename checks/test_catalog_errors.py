@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+import warnings
 from pathlib import Path
 
 import pytest
@@ -329,35 +330,44 @@ def test_cli_rejects_a_malformed_catalog_with_one_line_per_problem(
     assert err[2:] == [f"{where}: ch08.t.v3: field 'quantity': required field is missing"]
 
 
+ROOT = Path(__file__).parents[1]
+
+
+def run_pytest(
+    capsys: pytest.CaptureFixture[str], args: list[str], in_process: bool
+) -> tuple[int, str]:
+    """pytest run from the project root on ``args``: the exit code and everything it printed.
+    In this process (as pytest's own ``pytester`` runs it: the modules are imported already)
+    or, for a run with xdist workers, as a command."""
+    if in_process:
+        # the inner run's warnings (a plugin of the machine's warning about xdist) are its own
+        with pytest.MonkeyPatch.context() as patch, warnings.catch_warnings(record=True):
+            patch.chdir(ROOT)
+            code = pytest.main(args)
+        out, err = capsys.readouterr()
+        return int(code), out + err
+    done = subprocess.run(
+        [sys.executable, "-m", "pytest", *args],
+        cwd=ROOT,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    return done.returncode, done.stdout + done.stderr
+
+
 @pytest.mark.parametrize("workers", [[], ["-n", "2"]], ids=["serial", "xdist"])
 def test_pytest_stops_on_a_malformed_catalog_with_one_line_per_problem(
-    tmp_path: Path, book: Book, workers: list[str]
+    tmp_path: Path, book: Book, workers: list[str], capsys: pytest.CaptureFixture[str]
 ) -> None:
     """``pytest --book=... --catalog=DIR`` with a duplicate id: the usage error that lists the
     problems, one line each, exit 4, nothing run and no traceback, serial and under xdist."""
     draft = tmp_path / "draft"
     draft.mkdir()
     (draft / "ch08.toml").write_text(META + GIVENS + V3 + V3, encoding="utf-8")
-    done = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "pytest",
-            f"--book={book.path}",
-            f"--catalog={draft}",
-            "-p",
-            "no:cacheprovider",
-            "-q",
-            *workers,
-            "checks/test_book.py",
-        ],
-        cwd=Path(__file__).parents[1],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    output = done.stdout + done.stderr
-    assert done.returncode == pytest.ExitCode.USAGE_ERROR, output
+    args = [f"--book={book.path}", f"--catalog={draft}", "-p", "no:cacheprovider", "-q"]
+    code, output = run_pytest(capsys, [*args, *workers, "checks/test_book.py"], not workers)
+    assert code == pytest.ExitCode.USAGE_ERROR, output
     lines = [line for line in output.splitlines() if line.strip()]
     start = lines.index("ERROR: the catalog is invalid:")
     where = draft / "ch08.toml"
@@ -369,24 +379,12 @@ def test_pytest_stops_on_a_malformed_catalog_with_one_line_per_problem(
     assert "passed" not in output
 
 
-def test_pytest_refuses_a_catalog_directory_without_catalog_files(tmp_path: Path) -> None:
+def test_pytest_refuses_a_catalog_directory_without_catalog_files(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     """As the command does (``checks/test_cli.py`` tries the other wrong directories)."""
-    done = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "pytest",
-            f"--catalog={tmp_path}",
-            "-p",
-            "no:cacheprovider",
-            "-q",
-            "checks/test_book.py",
-        ],
-        cwd=Path(__file__).parents[1],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    assert done.returncode == pytest.ExitCode.USAGE_ERROR, done.stdout + done.stderr
-    assert "holds no catalog files" in done.stderr
-    assert "Traceback" not in done.stdout + done.stderr
+    args = [f"--catalog={tmp_path}", "-p", "no:cacheprovider", "-q", "checks/test_book.py"]
+    code, output = run_pytest(capsys, args, in_process=True)
+    assert code == pytest.ExitCode.USAGE_ERROR, output
+    assert "holds no catalog files" in output
+    assert "Traceback" not in output
