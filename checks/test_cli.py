@@ -131,14 +131,15 @@ def test_report_exits_one_and_marks_claims_that_differ_from_expect(
 ) -> None:
     """A claim whose verdict is not its ``expect`` (a catalog or model bug) fails ``report`` as
     it fails ``claims``; the report is still written, and says so on the page."""
-    source = Path(__file__).parents[1] / "reference" / "claims" / "chA1.toml"
+    source = Path(__file__).parents[1] / "reference" / "claims" / "ch00.toml"
     text = source.read_text(encoding="utf-8")
     draft = text.replace(
-        'pick = "sum_triangle"\nexpect = "verified"', 'pick = "sum_triangle"\nexpect = "rounding"'
+        'constant = "principia-later-editions-century"\nexpect = "verified"',
+        'constant = "principia-later-editions-century"\nexpect = "rounding"',
     )
     assert draft != text
     (tmp_path / "draft").mkdir()
-    (tmp_path / "draft" / "chA1.toml").write_text(draft, encoding="utf-8")
+    (tmp_path / "draft" / "ch00.toml").write_text(draft, encoding="utf-8")
     out = tmp_path / "out"
     code, _, err = run(
         capsys,
@@ -151,16 +152,16 @@ def test_report_exits_one_and_marks_claims_that_differ_from_expect(
         str(out),
     )
     assert code == 1
-    assert "1 claim(s) differ from expect: chA1.area.triangle" in err
+    assert "1 claim(s) differ from expect: ch00.principia-century" in err
     html = (out / "index.html").read_text(encoding="utf-8")
     assert 'id="failing"' in html
     assert re.search(
         r'<tr class="claim differs" data-verdict="verified" data-search="[^"]*" '
-        r'id="claim-chA1.area.triangle">',
+        r'id="claim-ch00.principia-century">',
         html,
     )
     code, _, _ = run(
-        capsys, "report", "--book", str(book.path), "--chapter", "A1", "--out", str(out)
+        capsys, "report", "--book", str(book.path), "--chapter", "0", "--out", str(out)
     )
     assert code == 0
     assert 'id="failing"' not in (out / "index.html").read_text(encoding="utf-8")
