@@ -241,8 +241,9 @@ def audited_report(
 def test_the_audited_page_shows_every_verdict_and_element(
     audited_report: Path, evaluation: Evaluation
 ) -> None:
-    """Every verdict, every kind of claim of the audited chapters, garbled numbers, errata
-    cards and the chosen figures are on the audited page."""
+    """Every verdict, every kind of claim of the audited chapters, garbled numbers, errata and
+    dated-constant cards and the chosen figures are on the audited page, which holds less than
+    half of those chapters' claims."""
     page = (audited_report / "index.html").read_text(encoding="utf-8")
     claims = json.loads((audited_report / "claims.json").read_text(encoding="utf-8"))["claims"]
     verdicts = {c["verdict"] for c in claims}
@@ -250,6 +251,8 @@ def test_the_audited_page_shows_every_verdict_and_element(
     assert verdicts == {"verified", "rounding", "erratum", "dated", "given"}
     assert kinds == {c.kind for c in evaluation if c.chapter in AUDITED_CHAPTERS}
     assert any(c["garble"] for c in claims)
+    assert '<article class="erratum' in page
+    assert '<article class="dated"' in page
     assert len(claims) < sum(c.chapter in AUDITED_CHAPTERS for c in evaluation) / 2
     for key in AUDITED_FIGURES:
         assert f'<figure id="figure-{key}"' in page
