@@ -113,10 +113,11 @@ def test_a_relative_path_is_made_absolute(monkeypatch: pytest.MonkeyPatch) -> No
         (None, tuple(c.key for c in identity().chapters)),
         (["7", "0", "04"], ("0", "4", "7")),
         (("0-2", "a1"), ("0", "1", "2", "A1")),
+        ([8, 12], ("8", "12")),
     ],
 )
 def test_chapter_specs(
-    spec: str | list[str] | tuple[str, ...] | None, keys: tuple[str, ...]
+    spec: str | list[str] | tuple[str, ...] | list[int] | None, keys: tuple[str, ...]
 ) -> None:
     assert chapter_keys(spec) == keys
 

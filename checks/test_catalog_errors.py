@@ -340,7 +340,8 @@ def run_pytest(
     In this process (as pytest's own ``pytester`` runs it: the modules are imported already)
     or, for a run with xdist workers, as a command."""
     if in_process:
-        # the inner run's warnings (a plugin of the machine's warning about xdist) are its own
+        # warnings raised inside the inner run belong to it, not to this test (pytest-benchmark,
+        # where it is installed, warns there that xdist is active)
         with pytest.MonkeyPatch.context() as patch, warnings.catch_warnings(record=True):
             patch.chdir(ROOT)
             code = pytest.main(args)

@@ -215,7 +215,7 @@ def load_book(path: Path) -> Book:
     return Book(path, lines, ident)
 
 
-def chapter_keys(spec: str | Iterable[str] | None) -> tuple[str, ...]:
+def chapter_keys(spec: str | Iterable[str | int] | None) -> tuple[str, ...]:
     """The chapter keys selected by a ``--chapter`` spec ("8", "0-3", "4,5", "A1"; None: all),
     or by several specs (["0", "4", "7"], as ``evaluate`` may be given them from Python).
 
@@ -226,7 +226,7 @@ def chapter_keys(spec: str | Iterable[str] | None) -> tuple[str, ...]:
     if spec is None:
         return tuple(keys)
     if not isinstance(spec, str):
-        spec = ",".join(spec)
+        spec = ",".join(map(str, spec))  # a list of specs, or of chapter numbers [0, 4, 7]
     if not spec.strip():
         raise ValueError(f"empty chapter spec: give e.g. 8, 0-3, 4,5 or A1 (chapters {keys})")
     chosen: list[str] = []
