@@ -212,7 +212,10 @@ def run_tests(root: Path, book: str, timeout: float, mutated: str | None = None)
         )
     except subprocess.TimeoutExpired:
         return "timeout"
-    if done.returncode in (4, 5):  # pytest's usage error (a missing test file) or no tests
+    # pytest's usage error: on the unmutated copy a harness problem (a missing test file); under a
+    # mutant the suite refusing to start, as it does for a catalog the mutated judge calls
+    # invalid or a book it calls wrong: the mutant is noticed, so killed
+    if done.returncode == 5 or (done.returncode == 4 and mutated is None):
         raise SystemExit(f"pytest could not run {tests} (exit {done.returncode}): {done.stderr!r}")
     return "survived" if done.returncode == 0 else "killed"
 
