@@ -52,16 +52,13 @@ class PolyView:
 
     ``coefficients`` maps monomial names ("x1y2" is x y^2, "x0y0" the constant) to exact
     coefficients; ``denominator`` is their least common denominator and ``numerators`` the
-    integers over it ((3x^2 + y^2)/2 has denominator 2, numerators x2y0: 3, x0y2: 1).
-    ``y_power_of["x1"]`` is the power of y in the only term with x^1 (and ``x_power_of`` the other
-    way), ``size`` the largest coefficient magnitude (0 for the zero polynomial).
+    integers over it ((3x^2 + y^2)/2 has denominator 2, numerators x2y0: 3, x0y2: 1); ``size``
+    the largest coefficient magnitude (0 for the zero polynomial).
     """
 
     coefficients: dict[str, Fraction]
     denominator: int
     numerators: dict[str, int]
-    y_power_of: dict[str, int]
-    x_power_of: dict[str, int]
     size: Fraction
 
 
@@ -73,17 +70,10 @@ def poly_view(p: Laurent, first: str = "x", second: str = "y") -> PolyView:
     if len(coeffs) != len(terms):
         raise ValueError("poly_view needs real coefficients: take real_part or imag_part first")
     denominator = math.lcm(*(c.denominator for c in coeffs.values())) if coeffs else 1
-    by_first: dict[int, list[int]] = {}
-    by_second: dict[int, list[int]] = {}
-    for a, b in coeffs:
-        by_first.setdefault(a, []).append(b)
-        by_second.setdefault(b, []).append(a)
     return PolyView(
         coefficients={_name(k, first, second): c for k, c in coeffs.items()},
         denominator=denominator,
         numerators={_name(k, first, second): int(c * denominator) for k, c in coeffs.items()},
-        y_power_of={f"{first}{a}": bs[0] for a, bs in by_first.items() if len(bs) == 1},
-        x_power_of={f"{second}{b}": as_[0] for b, as_ in by_second.items() if len(as_) == 1},
         size=max((abs(c) for c in coeffs.values()), default=Fraction(0)),
     )
 
