@@ -114,16 +114,19 @@ def test_a_relative_path_is_made_absolute(monkeypatch: pytest.MonkeyPatch) -> No
         (["7", "0", "04"], ("0", "4", "7")),
         (("0-2", "a1"), ("0", "1", "2", "A1")),
         ([8, 12], ("8", "12")),
+        (8, ("8",)),
     ],
 )
 def test_chapter_specs(
-    spec: str | list[str] | tuple[str, ...] | list[int] | None, keys: tuple[str, ...]
+    spec: str | int | list[str] | tuple[str, ...] | list[int] | None, keys: tuple[str, ...]
 ) -> None:
     assert chapter_keys(spec) == keys
 
 
-@pytest.mark.parametrize("spec", ["13", "3-1", "x", "1-B2", "", "  ", "4,", "-3", [], ["4", ""]])
-def test_bad_chapter_specs(spec: str | list[str]) -> None:
+@pytest.mark.parametrize(
+    "spec", ["13", "3-1", "x", "1-B2", "", "  ", "4,", "-3", [], ["4", ""], 13, -3]
+)
+def test_bad_chapter_specs(spec: str | int | list[str]) -> None:
     with pytest.raises(ValueError, match="chapter"):
         chapter_keys(spec)
 

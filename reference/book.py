@@ -215,9 +215,10 @@ def load_book(path: Path) -> Book:
     return Book(path, lines, ident)
 
 
-def chapter_keys(spec: str | Iterable[str | int] | None) -> tuple[str, ...]:
+def chapter_keys(spec: str | int | Iterable[str | int] | None) -> tuple[str, ...]:
     """The chapter keys selected by a ``--chapter`` spec ("8", "0-3", "4,5", "A1"; None: all),
-    or by several specs (["0", "4", "7"], as ``evaluate`` may be given them from Python).
+    or by several specs (["0", "4", "7"]); from Python a chapter number (8) or a list of them
+    ([0, 4, 7]) too.
 
     Leading zeros and the case of "A1" do not matter ("04", "a1"). Raises ``ValueError`` naming
     the part of the spec it cannot read, or for an empty spec.
@@ -225,7 +226,9 @@ def chapter_keys(spec: str | Iterable[str | int] | None) -> tuple[str, ...]:
     keys = [c.key for c in identity().chapters]
     if spec is None:
         return tuple(keys)
-    if not isinstance(spec, str):
+    if isinstance(spec, int):
+        spec = str(spec)
+    elif not isinstance(spec, str):
         spec = ",".join(map(str, spec))  # a list of specs, or of chapter numbers [0, 4, 7]
     if not spec.strip():
         raise ValueError(f"empty chapter spec: give e.g. 8, 0-3, 4,5 or A1 (chapters {keys})")

@@ -437,13 +437,13 @@ def evaluate_catalog(
 
 def evaluate(
     book: str | None = None,
-    chapters: str | Iterable[str | int] | None = None,
+    chapters: str | int | Iterable[str | int] | None = None,
     progress: bool = False,
 ) -> Evaluation:
     """Evaluate the catalog against the book at ``book`` (else ``$BANGCHECK_BOOK``).
 
-    ``chapters`` is a chapter spec ("8", "0-3", "4,5", "A1") or several (["0", "4", "7"], or
-    chapter numbers [0, 4, 7]); None for the whole book. Raises ``BookError`` for a missing or
+    ``chapters`` is a chapter spec ("8", "0-3", "4,5", "A1") or several (["0", "4", "7"]), or
+    chapter numbers (8, [0, 4, 7]); None for the whole book. Raises ``BookError`` for a missing or
     wrong book, ``CatalogError`` for an invalid catalog and ``ModelCallError`` where a model
     cannot be called as catalogued.
     """
