@@ -381,10 +381,11 @@ def test_pytest_stops_on_a_malformed_catalog_with_one_line_per_problem(
 
 
 def test_pytest_refuses_a_catalog_directory_without_catalog_files(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    tmp_path: Path, book: Book, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    """As the command does (``checks/test_cli.py`` tries the other wrong directories)."""
-    args = [f"--catalog={tmp_path}", "-p", "no:cacheprovider", "-q", "checks/test_book.py"]
+    """As the command does (``checks/test_cli.py`` tries the other wrong directories). The book
+    is given as an option: under ``CI=true`` a run without one stops on that first."""
+    args = [f"--book={book.path}", f"--catalog={tmp_path}", "-p", "no:cacheprovider", "-q", "checks/test_book.py"]
     code, output = run_pytest(capsys, args, in_process=True)
     assert code == pytest.ExitCode.USAGE_ERROR, output
     assert "holds no catalog files" in output
