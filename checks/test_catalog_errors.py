@@ -385,7 +385,14 @@ def test_pytest_refuses_a_catalog_directory_without_catalog_files(
 ) -> None:
     """As the command does (``checks/test_cli.py`` tries the other wrong directories). The book
     is given as an option: under ``CI=true`` a run without one stops on that first."""
-    args = [f"--book={book.path}", f"--catalog={tmp_path}", "-p", "no:cacheprovider", "-q", "checks/test_book.py"]
+    args = [
+        f"--book={book.path}",
+        f"--catalog={tmp_path}",
+        "-p",
+        "no:cacheprovider",
+        "-q",
+        "checks/test_book.py",
+    ]
     code, output = run_pytest(capsys, args, in_process=True)
     assert code == pytest.ExitCode.USAGE_ERROR, output
     assert "holds no catalog files" in output
