@@ -33,6 +33,7 @@ from reports.invariants import default_properties_path, read_properties, write_p
 from reports.outdir import MANIFEST, manifest_names
 from reports.output import claims_json, csv_text
 from reports.page import build_report, render_page, report_meta
+from reports.views import invariants_view
 
 # under xdist (--dist loadgroup) every test that reads the session's evaluation or scan is in
 # one group, run by one worker, which evaluates the catalog, scans the book and builds the
@@ -279,6 +280,17 @@ INVARIANTS = {
         }
     ],
 }
+
+
+def test_a_test_of_fixed_cases_is_shown_as_one_case_not_zero_examples() -> None:
+    """A property test of fixed (parametrized) cases, not a Hypothesis ``@given``, is recorded
+    with ``examples`` None: the page says "1 case", never 0 examples, as if nothing ran."""
+    sampled = {"name": "momentum", "law": "P is conserved", "examples": 100, "outcome": "passed"}
+    fixed = {**sampled, "name": "loop[-9.0-True]", "examples": None}
+    record = {"date": "2026-11-22T00:00:00Z", "invariants": [sampled, fixed]}
+    view = invariants_view(record)
+    assert view is not None
+    assert [row["examples"] for row in view["rows"]] == [100, "1 case"]
 
 
 def test_the_report_finds_the_tests_record_from_the_working_directory_up(

@@ -2,12 +2,13 @@
 
 For every test marked ``properties`` it records the invariant (the test's name), the law (its
 docstring's first paragraph), the book's equations and figures the docstring cites, how many
-examples ran, the worst value of any ``hypothesis.target`` score (the suite targets its
-conservation errors there) and the outcome. At the end of the session the controller (not an xdist
-worker) writes ``.bangcheck/properties.json`` in pytest's rootdir (``reports.invariants``), which
-``bangcheck report`` shows with its date. Examples and scores come from the run statistics
-Hypothesis hands over once per test (``checks.plugins.hypothesis_api.collecting``; the same ones
-its pytest plugin prints with ``--hypothesis-show-statistics``); they cost nothing per example.
+examples ran (None for a test of fixed cases, not a Hypothesis ``@given``), the worst value of
+any ``hypothesis.target`` score (the suite targets its conservation errors there) and the
+outcome. At the end of the session the controller (not an xdist worker) writes
+``.bangcheck/properties.json`` in pytest's rootdir (``reports.invariants``), which ``bangcheck
+report`` shows with its date. Examples and scores come from the run statistics Hypothesis hands
+over once per test (``checks.plugins.hypothesis_api.collecting``; the same ones its pytest plugin
+prints with ``--hypothesis-show-statistics``); they cost nothing per example.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from datetime import UTC, datetime
 from typing import Any
 
 import pytest
-from hypothesis import settings
+from hypothesis import is_hypothesis_test, settings
 
 from checks.plugins.hypothesis_api import collecting
 from reports.invariants import write_properties
@@ -96,7 +97,11 @@ class InvariantRecorder:
                         "module": getattr(getattr(item, "module", None), "__name__", ""),
                         "law": _law(doc),
                         "reference": ", ".join(dict.fromkeys(_REFERENCE.findall(doc or ""))),
-                        "examples": observer.examples,
+                        "examples": (
+                            observer.examples
+                            if function is not None and is_hypothesis_test(function)
+                            else None
+                        ),
                         "worst_error": observer.worst,
                     },
                 )
