@@ -157,6 +157,21 @@ def test_the_command_writes_a_report_of_one_chapter(
     assert 'id="claim-ch08.tower-100-30-10.v3"' not in html
     assert '<figure id="figure-energy-ellipses">' in html
     assert '<figure id="figure-tower-100-30-10">' not in html
+    # it says it is one chapter's, everywhere a reader may take its counts for the book's
+    assert 'id="selection"><strong>Chapter 3 only</strong>' in html
+    assert json.loads((out / "claims.json").read_text("utf-8"))["meta"]["chapters"] == ["3"]
+    sheet = (out / "errata.md").read_text("utf-8")
+    assert "\nChapter 3 only: 1 error (1 printed value or formula), in book order." in sheet
+    slips = re.findall(r"<tr><td><code>(ch\d\d)[.\w-]*</code></td><td class=\"num\">", html)
+    assert slips
+    assert set(slips) == {"ch03"}
+
+
+def test_a_report_of_the_whole_book_names_no_selection(report_dir: Path) -> None:
+    assert 'id="selection"' not in (report_dir / "index.html").read_text("utf-8")
+    assert json.loads((report_dir / "claims.json").read_text("utf-8"))["meta"]["chapters"] is None
+    sheet = (report_dir / "errata.md").read_text("utf-8")
+    assert " only: " not in sheet.split("\n\n")[1]
 
 
 def test_the_report_files_are_written(report_dir: Path) -> None:

@@ -118,6 +118,7 @@ class Evaluation(Sequence[EvaluatedClaim]):
     contexts: Mapping[str, Context] = field(default_factory=dict, repr=False)
     centres: Mapping[str, Fraction] = field(default_factory=dict, repr=False)
     misprints: Mapping[str, list[Outcome]] = field(default_factory=dict, repr=False)
+    chapters: tuple[str, ...] | None = None  # the chapters evaluated, in book order; None: all
 
     def __len__(self) -> int:
         return len(self.claims)

@@ -432,6 +432,7 @@ def evaluate_catalog(
         dict(evaluator.contexts),
         centres,
         outcomes,
+        None if wanted is None else tuple(c.key for c in book.identity.chapters if c.key in wanted),
     )
 
 

@@ -137,6 +137,21 @@ def _entry(evaluation: Evaluation, error: Error) -> list[str]:
     return lines
 
 
+def _count(n: int, one: str, many: str | None = None) -> str:
+    """ "1 error", "2 errors"."""
+    return f"{n} {one if n == 1 else many or one + 's'}"
+
+
+def _selection(evaluation: Evaluation) -> str:
+    """What a sheet of some chapters says first: "Chapters 8 and 9 only: "; nothing for all."""
+    chapters = evaluation.chapters
+    if chapters is None:
+        return ""
+    if len(chapters) == 1:
+        return f"Chapter {chapters[0]} only: "
+    return f"Chapters {', '.join(chapters[:-1])} and {chapters[-1]} only: "
+
+
 def errata_markdown(evaluation: Evaluation) -> str:
     """``errata.md``: every error in book order, by chapter (where, "for ... read ...", the
     summary, the source of a constant or date), then the dated constants to update."""
@@ -146,8 +161,9 @@ def errata_markdown(evaluation: Evaluation) -> str:
     out = [
         f"# Errata: {book.title}",
         "",
-        f"{len(errors)} errors ({claims} printed values or formulas), in book order. Lines are "
-        "those of the text the catalog cites (sha256 "
+        f"{_selection(evaluation)}{_count(len(errors), 'error')} "
+        f"({_count(claims, 'printed value or formula', 'printed values or formulas')}), "
+        "in book order. Lines are those of the text the catalog cites (sha256 "
         f"`{book.sha256[:16]}…`); sections are the book's headings.",
         "",
     ]

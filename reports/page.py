@@ -80,6 +80,8 @@ def report_meta(evaluation: Evaluation, scan: ScanResult) -> dict[str, Any]:
         "errata": counts["erratum"],
         "errors": errata_counts(evaluation)[1],
         "coverage": {row["chapter"]: row for row in _coverage(scan)},
+        # the chapters of a report of some chapters (all its counts are theirs); null: all
+        "chapters": None if evaluation.chapters is None else list(evaluation.chapters),
     }
 
 
@@ -187,7 +189,16 @@ def render_page(
         for key in titles
         if any(c.chapter == key for c in evaluation)
     }
-    slips = [s for f in catalog.files for s in f.slips]
+    selected = evaluation.chapters
+    slips = sorted(
+        (
+            s
+            for f in catalog.files
+            if selected is None or f.meta.chapter in selected
+            for s in f.slips
+        ),
+        key=lambda s: s.line,
+    )
     template = _environment().get_template("index.html.j2")
     return template.render(
         meta=report_meta(evaluation, scan),
