@@ -11,7 +11,9 @@ from pathlib import Path
 
 import pytest
 
-from reference.book import Book
+from reference.book import Book, chapter_keys
+from reference.evaluation import evaluate_catalog
+from reference.validate import checked_catalog
 from reports.cli import main
 
 pytestmark = pytest.mark.integrity
@@ -195,6 +197,45 @@ def test_a_catalog_directory_one_level_up_gets_a_hint(capsys: pytest.CaptureFixt
     with pytest.raises(SystemExit):
         main(["scan", "--catalog", str(reference)])
     assert f"did you mean {reference / 'claims'}?" in capsys.readouterr().err
+
+
+def test_a_draft_of_some_chapters_says_which_and_refuses_the_others(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A ``--catalog`` directory of one chapter's file is a draft of that chapter: the whole
+    run says so on stderr; asking for a chapter it has no file for is an error (exit 2), not
+    a report of no claims."""
+    draft = tmp_path / "draft"
+    draft.mkdir()
+    shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / "ch08.toml", draft)
+    code, _, err = run(capsys, "claims", "--catalog", str(draft), "--book", str(book.path))
+    assert code == 0
+    assert f"the catalog directory {draft} holds chapter 8 only" in err
+    assert "bangcheck: 120 claims" in err
+    code, _, err = run(
+        capsys, "claims", "--catalog", str(draft), "--chapter", "7,8", "--book", str(book.path)
+    )
+    assert code == 2
+    assert (
+        f"error: the catalog directory {draft} has no file for chapter 7 (it holds chapter 8)"
+        in err
+    )
+    code, _, err = run(
+        capsys, "claims", "--catalog", str(draft), "--chapter", "8", "--book", str(book.path)
+    )
+    assert code == 0
+    assert "holds chapter" not in err
+
+
+def test_an_evaluation_knows_whether_it_is_of_some_chapters(book: Book, tmp_path: Path) -> None:
+    """What a report of some chapters names (``Evaluation.chapters``): the chapters asked for,
+    in book order; None when every chapter was asked for, as the commands do by default."""
+    draft = tmp_path / "draft"
+    draft.mkdir()
+    shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / "chA1.toml", draft)
+    catalog = checked_catalog(book, draft)
+    assert evaluate_catalog(catalog, book, chapter_keys(None)).chapters is None
+    assert evaluate_catalog(catalog, book, chapter_keys("A1,0")).chapters == ("0", "A1")
 
 
 @pytest.mark.parametrize("spec", ["", " ", ",", "4,"])

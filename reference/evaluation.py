@@ -432,8 +432,16 @@ def evaluate_catalog(
         dict(evaluator.contexts),
         centres,
         outcomes,
-        None if wanted is None else tuple(c.key for c in book.identity.chapters if c.key in wanted),
+        _selection(book, wanted),
     )
+
+
+def _selection(book: Book, wanted: set[str] | None) -> tuple[str, ...] | None:
+    """The chapters of a run of some chapters, in book order; None for the whole book."""
+    keys = [c.key for c in book.identity.chapters]
+    if wanted is None or wanted.issuperset(keys):
+        return None
+    return tuple(k for k in keys if k in wanted)
 
 
 def evaluate(

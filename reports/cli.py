@@ -15,9 +15,9 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from reference.book import BOOK_ENV, BookError, book_path, chapter_keys, load_book
+from reference.book import BOOK_ENV, Book, BookError, book_path, chapter_keys, load_book
 from reference.calls import ModelCallError
-from reference.catalog import CatalogDirectoryError, catalog_paths, default_directory
+from reference.catalog import Catalog, CatalogDirectoryError, catalog_paths, default_directory
 from reference.compare import VERDICTS
 from reference.evaluation import Evaluation, evaluate_catalog
 from reference.formulas import unicode_formula
@@ -171,7 +171,7 @@ def _print_claims(evaluation: Evaluation, as_json: bool, verdict: str | None) ->
 
 def _claims(args: argparse.Namespace) -> int:
     book = load_book(book_path(args.book))
-    catalog = checked_catalog(book, args.catalog)
+    catalog = _catalog(args, book)
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
     _print_claims(evaluation, args.json, args.verdict)
     counts = evaluation.verdict_counts()
@@ -249,7 +249,7 @@ def _print_scan(result: ScanResult, book_lines: Sequence[str], list_missing: boo
 
 def _scan(args: argparse.Namespace) -> int:
     book = load_book(book_path(args.book))
-    catalog = checked_catalog(book, args.catalog)
+    catalog = _catalog(args, book)
     result = scan(book, catalog, args.chapters)
     if args.json:
         print(json.dumps(_scan_json(result), ensure_ascii=False))
@@ -292,7 +292,7 @@ def _print_power(report: PowerReport, whole_book: bool) -> None:
 
 def _power(args: argparse.Namespace) -> int:
     book = load_book(book_path(args.book))
-    catalog = checked_catalog(book, args.catalog)
+    catalog = _catalog(args, book)
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
     report = evaluation.power()
     whole_book = args.chapter is None
@@ -344,7 +344,7 @@ def _fmt_catalog(args: argparse.Namespace) -> int:
 
     directory = args.catalog if args.catalog is not None else Path(str(default_directory()))
     book = load_book(book_path(args.book)) if args.book or os.environ.get(BOOK_ENV) else None
-    catalog = checked_catalog(book, args.catalog)
+    catalog = _catalog(args, book)
     chosen = {
         f.stem for f in catalog.files if args.chapters is None or f.meta.chapter in args.chapters
     }
@@ -376,7 +376,7 @@ def _report(args: argparse.Namespace) -> int:
     check_target_now(out)  # before the work: a refused directory is said at once
     properties = _invariants(args.properties)
     book = load_book(book_path(args.book))
-    catalog = checked_catalog(book, args.catalog)
+    catalog = _catalog(args, book)
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
     result = scan(book, catalog, args.chapters)
     print("bangcheck: rendering the report", file=sys.stderr)
@@ -412,6 +412,30 @@ def main(argv: Sequence[str] | None = None) -> int:
         # previous report, or debris the next run cleans up
         print("bangcheck: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
+
+
+def _catalog(args: argparse.Namespace, book: Book | None) -> Catalog:
+    """The validated catalog of the run. A ``--catalog`` directory that lacks some chapters is
+    a draft of the others: a note says which it holds; a ``--chapter`` it has no file for is an
+    error (``CatalogDirectoryError``), not a report of no claims."""
+    catalog = checked_catalog(book, args.catalog)
+    if args.catalog is None:
+        return catalog
+    held = [f.meta.chapter for f in catalog.files]
+    if args.chapter is not None:  # chapters asked for by name
+        absent = [key for key in args.chapters if key not in held]
+        if absent:
+            raise CatalogDirectoryError(
+                f"the catalog directory {args.catalog} has no file for chapter "
+                f"{', '.join(absent)} (it holds chapter {', '.join(held)})"
+            )
+    elif book is not None and len(held) < len(book.identity.chapters):
+        print(
+            f"bangcheck: note: the catalog directory {args.catalog} holds chapter "
+            f"{', '.join(held)} only; the other chapters are left out",
+            file=sys.stderr,
+        )
+    return catalog
 
 
 def _run(argv: Sequence[str] | None) -> int:

@@ -210,5 +210,6 @@ def verdict_chart(counts: dict[str, dict[str, int]], verdicts: tuple[str, ...]) 
             bottom = [b + h for b, h in zip(bottom, heights, strict=True)]
     ax.set_xlabel("chapter")
     ax.set_ylabel("claims")
-    ax.legend(fontsize="x-small", ncols=3)
+    if any(bottom):  # a legend of the bars drawn (a report of no claims draws none)
+        ax.legend(fontsize="x-small", ncols=3)
     return _svg(fig, "verdict-chart")
