@@ -154,7 +154,10 @@ def test_report_exits_one_and_marks_claims_that_differ_from_expect(
         str(out),
     )
     assert code == 1
-    assert "1 claim(s) differ from expect: ch00.principia-century" in err
+    assert (
+        "1 claim(s) differ from the catalog:\n"
+        "  ch00.principia-century (line 75): verdict verified, expected rounding\n" in err
+    )
     html = (out / "index.html").read_text(encoding="utf-8")
     assert 'id="failing"' in html
     assert re.search(
@@ -197,6 +200,27 @@ def test_a_catalog_directory_one_level_up_gets_a_hint(capsys: pytest.CaptureFixt
     with pytest.raises(SystemExit):
         main(["scan", "--catalog", str(reference)])
     assert f"did you mean {reference / 'claims'}?" in capsys.readouterr().err
+
+
+def test_an_erratum_whose_model_misses_its_correct_value_says_so(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The verdict is the expected erratum, but the model disagrees with the catalog's
+    ``correct``: ``claims`` exits 1 and names that cause, not a verdict mismatch."""
+    text = (Path(__file__).parents[1] / "reference" / "claims" / "ch08.toml").read_text("utf-8")
+    draft = text.replace('correct = "0.077"', 'correct = "0.09"', 1)
+    assert draft != text
+    (tmp_path / "draft").mkdir()
+    (tmp_path / "draft" / "ch08.toml").write_text(draft, encoding="utf-8")
+    code, _, err = run(
+        capsys, "claims", "--catalog", str(tmp_path / "draft"), "--book", str(book.path)
+    )
+    assert code == 1
+    assert re.search(
+        r"1 claim\(s\) differ from the catalog:\n  ch08\.[\w.-]+ \(line \d+\): the model "
+        r"disagrees with the catalog's correct value 0\.09\n",
+        err,
+    )
 
 
 def test_a_draft_of_some_chapters_says_which_and_refuses_the_others(

@@ -96,6 +96,18 @@ class EvaluatedClaim:
             return self.matched_edition is not None and self.matched_edition == self.edition
         return self.expect != "erratum" or self.correct_agrees is True
 
+    @property
+    def failure(self) -> str | None:
+        """Why the claim test fails, in words (None when it passes)."""
+        if self.verdict != self.expect:
+            return f"verdict {self.verdict}, expected {self.expect}"
+        if self.expect == "dated" and self.matched_edition != self.edition:
+            found = self.matched_edition or "no edition"
+            return f"matched {found}, the catalog names {self.edition}"
+        if self.expect == "erratum" and self.correct_agrees is not True:
+            return f"the model disagrees with the catalog's correct value {self.correct}"
+        return None
+
     def to_json(self) -> dict[str, Any]:
         """The claim as a JSON object (missing values null, never NaN); the error class is
         ``class`` there."""

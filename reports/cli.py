@@ -19,7 +19,7 @@ from reference.book import BOOK_ENV, Book, BookError, book_path, chapter_keys, l
 from reference.calls import ModelCallError
 from reference.catalog import Catalog, CatalogDirectoryError, catalog_paths, default_directory
 from reference.compare import VERDICTS
-from reference.evaluation import Evaluation, evaluate_catalog
+from reference.evaluation import EvaluatedClaim, Evaluation, evaluate_catalog
 from reference.formulas import unicode_formula
 from reference.power import ClassRate, PowerReport
 from reference.scan import ScanResult, scan
@@ -107,16 +107,18 @@ def _fmt(value: float | list[float] | None) -> str:
     return f"{value:.10g}"
 
 
-def _failing(evaluation: Evaluation, strict: bool) -> list[str]:
-    return [c.id for c in evaluation if not c.passed and (c.verdict != "unmodeled" or strict)]
+def _failing(evaluation: Evaluation, strict: bool) -> list[EvaluatedClaim]:
+    return [c for c in evaluation if not c.passed and (c.verdict != "unmodeled" or strict)]
 
 
-def _say_failing(failing: list[str]) -> None:
-    print(
-        f"bangcheck: {len(failing)} claim(s) differ from expect: {', '.join(failing[:10])}"
-        + (f" and {len(failing) - 10} more" if len(failing) > 10 else ""),
-        file=sys.stderr,
-    )
+def _say_failing(failing: list[EvaluatedClaim]) -> None:
+    """Each failing claim (ten at most) with why: a verdict other than its ``expect``, an
+    erratum whose model disagrees with its ``correct``, a dated claim of another edition."""
+    print(f"bangcheck: {len(failing)} claim(s) differ from the catalog:", file=sys.stderr)
+    for c in failing[:10]:
+        print(f"  {c.id} (line {c.line}): {c.failure}", file=sys.stderr)
+    if len(failing) > 10:
+        print(f"  and {len(failing) - 10} more", file=sys.stderr)
 
 
 CELL = 24  # the widest printed cell of the claims table; longer formulas go below the row
