@@ -279,7 +279,10 @@ expect = "verified"
 def test_duplicate_ids(tmp_path: Path, book: Book) -> None:
     found = problems_of(tmp_path, book, META + GIVENS + V3 + V3)
     assert [(p.id, p.field) for p in found] == [("ch08.t.v3", "id")]
-    assert found[0].message == f"duplicate id (also at line 6562 of {tmp_path / 'ch08.toml'})"
+    assert (
+        found[0].message
+        == f"duplicate id (also the claim of book line 6562 in {tmp_path / 'ch08.toml'})"
+    )
 
 
 def test_the_packaged_catalog_is_named_by_its_place_in_the_project(book: Book) -> None:
@@ -292,6 +295,8 @@ def test_the_packaged_catalog_is_named_by_its_place_in_the_project(book: Book) -
 def test_bad_toml_names_the_file(tmp_path: Path, book: Book) -> None:
     found = one_problem(tmp_path, book, META + "[[claim]\nid = ")
     assert "not valid TOML" in found.message
+    # a problem of the whole file names no claim or field: no "-: field '-':" filler
+    assert str(found).startswith(f"{found.file}: not valid TOML: ")
 
 
 def test_meta_must_match_the_book(tmp_path: Path, book: Book) -> None:
@@ -373,7 +378,8 @@ def test_pytest_stops_on_a_malformed_catalog_with_one_line_per_problem(
     start = lines.index("ERROR: the catalog is invalid:")
     where = draft / "ch08.toml"
     assert lines[start + 1 :] == [
-        f"{where}: ch08.t.v3: field 'id': duplicate id (also at line 6562 of {where})"
+        f"{where}: ch08.t.v3: field 'id': duplicate id "
+        f"(also the claim of book line 6562 in {where})"
     ]
     assert "Traceback" not in output
     assert "KeyError" not in output

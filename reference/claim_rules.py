@@ -142,8 +142,8 @@ class ClaimRules:
         if not c.id.startswith(f.stem + "."):
             add("id", f"must start with {f.stem}. (its file)")
         if c.id in self.ids:
-            add("id", f"duplicate id (also at {self.ids[c.id]})")
-        self.ids.setdefault(c.id, f"line {c.line} of {f.name}")
+            add("id", f"duplicate id (also {self.ids[c.id]})")
+        self.ids.setdefault(c.id, f"the claim of book line {c.line} in {f.name}")
         lo, hi = f.meta.lines
         if not lo <= c.line <= hi:
             add("line", f"{c.line} is outside the chapter's lines [{lo}, {hi}]")
@@ -487,8 +487,8 @@ class ClaimRules:
         if not s.id.startswith(f.stem + "."):
             self.add(f, s.id, "id", f"must start with {f.stem}.")
         if s.id in self.ids:
-            self.add(f, s.id, "id", f"duplicate id (also at {self.ids[s.id]})")
-        self.ids.setdefault(s.id, f"line {s.line} of {f.name}")
+            self.add(f, s.id, "id", f"duplicate id (also {self.ids[s.id]})")
+        self.ids.setdefault(s.id, f"the slip of book line {s.line} in {f.name}")
         if not lo <= s.line <= hi:
             self.add(f, s.id, "line", f"{s.line} is outside [{lo}, {hi}]")
         elif self.book is not None and occurrences(self.book.line(s.line), s.quote) != 1:

@@ -58,7 +58,14 @@ class Problem:
     message: str
 
     def __str__(self) -> str:
-        return f"{self.file}: {self.id}: field '{self.field}': {self.message}"
+        """``file: id: field 'name': message``, leaving out an id or field of "-" (none: a
+        problem of the whole file, such as its TOML syntax)."""
+        where = [self.file]
+        if self.id != "-":
+            where.append(self.id)
+        if self.field != "-":
+            where.append(f"field '{self.field}'")
+        return ": ".join([*where, self.message])
 
 
 class CatalogError(Exception):
