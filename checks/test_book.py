@@ -20,6 +20,7 @@ from reference.book import (
     line_digests,
     load_book,
 )
+from reference.evaluation import evaluate
 
 
 @pytest.mark.integrity
@@ -92,6 +93,14 @@ def test_no_book_given(monkeypatch: pytest.MonkeyPatch) -> None:
         book_path(None)
 
 
+def test_evaluate_without_a_book_says_how_from_python(monkeypatch: pytest.MonkeyPatch) -> None:
+    """``reference.evaluate()`` is called from Python: its error names its argument, not the
+    command line's ``--book``."""
+    monkeypatch.delenv("BANGCHECK_BOOK", raising=False)
+    with pytest.raises(BookError, match=r"evaluate\(book=PATH\) or set BANGCHECK_BOOK"):
+        evaluate()
+
+
 def test_a_relative_path_is_made_absolute(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setenv("BANGCHECK_BOOK", "book.txt")
     assert book_path(None) == Path("book.txt").resolve()
@@ -127,8 +136,15 @@ def test_chapter_specs(
     "spec", ["13", "3-1", "x", "1-B2", "", "  ", "4,", "-3", [], ["4", ""], 13, -3]
 )
 def test_bad_chapter_specs(spec: str | int | list[str]) -> None:
-    with pytest.raises(ValueError, match="chapter"):
+    with pytest.raises(ValueError, match="chapter") as error:
         chapter_keys(spec)
+    assert "['" not in str(error.value)  # the chapters listed as people write them, no repr
+
+
+@pytest.mark.parametrize("spec", [8.0, True, object()])
+def test_a_chapter_that_is_no_spec_number_or_list_is_a_type_error(spec: object) -> None:
+    with pytest.raises(TypeError, match="chapters: give a spec"):
+        chapter_keys(spec)  # type: ignore[arg-type]  # on purpose
 
 
 def test_a_pipe_or_a_device_is_no_book(tmp_path: Path) -> None:

@@ -221,17 +221,24 @@ def chapter_keys(spec: str | int | Iterable[str | int] | None) -> tuple[str, ...
     ([0, 4, 7]) too.
 
     Leading zeros and the case of "A1" do not matter ("04", "a1"). Raises ``ValueError`` naming
-    the part of the spec it cannot read, or for an empty spec.
+    the part of the spec it cannot read, or for an empty spec, and ``TypeError`` for anything
+    that is not a spec, a number or a list of them (8.0).
     """
     keys = [c.key for c in identity().chapters]
+    listed = ", ".join(keys)
     if spec is None:
         return tuple(keys)
-    if isinstance(spec, int):
+    if isinstance(spec, int) and not isinstance(spec, bool):
         spec = str(spec)
-    elif not isinstance(spec, str):
+    elif isinstance(spec, Iterable) and not isinstance(spec, str):
         spec = ",".join(map(str, spec))  # a list of specs, or of chapter numbers [0, 4, 7]
+    if not isinstance(spec, str):
+        raise TypeError(
+            f"chapters: give a spec (8, '0-3', '4,5', 'A1'), a chapter number or a list of them, "
+            f"not {spec!r}"
+        )
     if not spec.strip():
-        raise ValueError(f"empty chapter spec: give e.g. 8, 0-3, 4,5 or A1 (chapters {keys})")
+        raise ValueError(f"empty chapter spec: give e.g. 8, 0-3, 4,5 or A1 (chapters {listed})")
     chosen: list[str] = []
     for part in spec.split(","):
         part = part.strip()
@@ -239,12 +246,12 @@ def chapter_keys(spec: str | int | Iterable[str | int] | None) -> tuple[str, ...
         if sep:
             lo, hi = _chapter_key(lo), _chapter_key(hi)
             if lo not in keys or hi not in keys or keys.index(lo) > keys.index(hi):
-                raise ValueError(f"bad chapter range {part!r}: use e.g. 0-3 (chapters {keys})")
+                raise ValueError(f"bad chapter range {part!r}: use e.g. 0-3 (chapters {listed})")
             chosen.extend(keys[keys.index(lo) : keys.index(hi) + 1])
         elif _chapter_key(part) in keys:
             chosen.append(_chapter_key(part))
         else:
-            raise ValueError(f"unknown chapter {part!r}: chapters are {', '.join(keys)}")
+            raise ValueError(f"unknown chapter {part!r}: chapters are {listed}")
     return tuple(k for k in keys if k in chosen)
 
 

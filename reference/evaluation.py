@@ -13,13 +13,14 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
 import sys
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 
-from reference.book import Book, book_path, chapter_keys, load_book
+from reference.book import BOOK_ENV, Book, BookError, book_path, chapter_keys, load_book
 from reference.calls import ModelCache, ModelCallError
 from reference.catalog import Catalog
 from reference.compare import Context, Edition, Judgement, Verdict, exact, inside, judge
@@ -456,6 +457,8 @@ def evaluate(
     wrong book, ``CatalogError`` for an invalid catalog and ``ModelCallError`` where a model
     cannot be called as catalogued.
     """
+    if book is None and not os.environ.get(BOOK_ENV):
+        raise BookError(f"no book given: evaluate(book=PATH) or set {BOOK_ENV}")
     the_book = load_book(book_path(book))
     catalog = checked_catalog(the_book)
     return evaluate_catalog(catalog, the_book, chapter_keys(chapters), progress)
