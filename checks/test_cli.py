@@ -262,6 +262,21 @@ def test_an_evaluation_knows_whether_it_is_of_some_chapters(book: Book, tmp_path
     assert evaluate_catalog(catalog, book, chapter_keys("A1,0")).chapters == ("0", "A1")
 
 
+def test_the_common_options_may_come_before_the_command(
+    book: Book, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``bangcheck --book X claims`` as ``bangcheck claims --book X``; given on both sides,
+    the one after the command wins."""
+    code, _, err = run(capsys, "--book", str(book.path), "--chapter", "A1", "claims")
+    assert code == 0
+    assert "bangcheck: 14 claims" in err
+    code, _, err = run(
+        capsys, "--book", "/no/such/book", "claims", "--book", str(book.path), "--chapter", "A1"
+    )
+    assert code == 0
+    assert "bangcheck: 14 claims" in err
+
+
 @pytest.mark.parametrize("spec", ["", " ", ",", "4,"])
 def test_an_empty_chapter_spec_is_a_usage_error(
     spec: str, capsys: pytest.CaptureFixture[str]

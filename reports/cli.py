@@ -47,16 +47,12 @@ def _parser() -> argparse.ArgumentParser:
         description="Check the numbers of Classical Mechanics with a BANG! (Unit 1).",
     )
     parser.add_argument("--version", action="version", version=f"bangcheck {bangcheck_version()}")
+    _common_options(parser, None)
     sub = parser.add_subparsers(dest="command", required=True)
     common = argparse.ArgumentParser(add_help=False)
-    common.add_argument("--book", help="path of bang-unit1.txt (default: $BANGCHECK_BOOK)")
-    common.add_argument("--chapter", help='chapters: "8", "0-3", "4,5", "A1" (default: all)')
-    common.add_argument(
-        "--catalog",
-        type=Path,
-        help="a catalog directory of chNN.toml files to use instead of "
-        "the packaged one (for drafting)",
-    )
+    # given after the command, an option overrides the same one given before it; not given
+    # there, it leaves the value from before the command (or None) alone
+    _common_options(common, argparse.SUPPRESS)
 
     claims = sub.add_parser("claims", parents=[common], help="the evaluated catalog")
     claims.add_argument("--json", action="store_true", help="one JSON object per claim")
@@ -97,6 +93,23 @@ def _parser() -> argparse.ArgumentParser:
         f"the nearest {CACHE_DIR}/{PROPERTIES_FILE}, which pytest writes)",
     )
     return parser
+
+
+def _common_options(parser: argparse.ArgumentParser, default: object) -> None:
+    """``--book``, ``--chapter`` and ``--catalog``, taken before the command or after it."""
+    parser.add_argument(
+        "--book", default=default, help="path of bang-unit1.txt (default: $BANGCHECK_BOOK)"
+    )
+    parser.add_argument(
+        "--chapter", default=default, help='chapters: "8", "0-3", "4,5", "A1" (default: all)'
+    )
+    parser.add_argument(
+        "--catalog",
+        type=Path,
+        default=default,
+        help="a catalog directory of chNN.toml files to use instead of "
+        "the packaged one (for drafting)",
+    )
 
 
 def _fmt(value: float | list[float] | None) -> str:
