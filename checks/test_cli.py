@@ -314,11 +314,16 @@ def test_version(capsys: pytest.CaptureFixture[str]) -> None:
         (lambda b: b.replace(b"V3=3.62", b"V3=3.65", 1), "line 6527 differs from the book's"),
         (lambda b: b.replace(b"\n", b"\n\n", 1), "it has 16,965 lines, the book 16,964"),
         (
+            lambda b: b"".join(b.splitlines(keepends=True)[:16000]),
+            "it has 16,000 lines, the book 16,964; they are the book's first 16,000: the rest is "
+            "missing",
+        ),
+        (
             lambda b: b.replace(b"V3=3.62", b"V3=3.65").replace(b"m1=100", b"m1=101"),
             "lines differ from the book's: ",
         ),
     ],
-    ids=["empty", "crlf", "final-newline", "one-line", "line-count", "lines"],
+    ids=["empty", "crlf", "final-newline", "one-line", "line-count", "cut", "lines"],
 )
 def test_a_different_book_says_how_it_differs(
     book: Book,

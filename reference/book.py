@@ -167,6 +167,8 @@ def describe_difference(data: bytes, ident: Identity) -> str:
         return "it is the book with a byte-order mark added at the start"
     text = data.decode("utf-8").replace("\r\n", "\n")
     lines = text.split("\n")
+    if text.endswith("\n"):  # a final newline ends the last line: it starts no new one
+        lines.pop()
     known = known_line_digests()
     mine = line_digests(lines)
     size = LINE_DIGEST_SIZE
@@ -180,6 +182,10 @@ def describe_difference(data: bytes, ident: Identity) -> str:
         parts.append(f"it has {len(lines):,} lines, the book {ident.lines:,}")
         if differ:
             parts.append(f"the first line that differs is line {differ[0]}")
+        elif len(lines) < ident.lines:
+            parts.append(f"they are the book's first {len(lines):,}: the rest is missing")
+        else:
+            parts.append(f"the book's lines are all there, {len(lines) - ident.lines:,} more after")
     elif differ:
         if len(differ) == 1:
             parts.append(f"line {differ[0]} differs from the book's")
