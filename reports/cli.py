@@ -285,6 +285,8 @@ def _print_power(report: PowerReport, whole_book: bool) -> None:
     print(f"\nper class:\n{header} {'target':>7}")
     for rate in report.classes:
         print(_rate_row(rate.cls, rate))
+    if not whole_book:
+        print("  (the targets are the whole book's: a selection of chapters is not judged by them)")
     for title, groups in (("number form", report.forms), ("chapter", report.chapters)):
         print(f"\nper {title}:")
         for key, rates in groups.items():
@@ -295,10 +297,10 @@ def _print_power(report: PowerReport, whole_book: bool) -> None:
     print(
         "\nmisses by reason: " + (", ".join(f"{r} {n}" for r, n in reasons.most_common()) or "none")
     )
-    for miss in report.unexplained:
+    for miss in report.misses:
         print(
-            f"  unexplained: {miss.id} (line {miss.line}) {miss.cls}: {miss.printed} -> "
-            f"{miss.misprint} is {miss.verdict}"
+            f"  {miss.id} (line {miss.line}) {miss.cls}: {miss.printed} -> {miss.misprint} is "
+            f"{miss.verdict}: {miss.reason or 'unexplained'}"
         )
     if whole_book:
         for failure in report.failures():
