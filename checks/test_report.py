@@ -167,6 +167,14 @@ def test_the_command_writes_a_report_of_one_chapter(
     assert set(slips) == {"ch03"}
 
 
+def test_the_sheet_prints_a_garbled_dated_constant_as_the_book_does(evaluation: Evaluation) -> None:
+    """The Earth's mass is extracted as "5.9742·1024" (its superscript flattened): the errata
+    sheet shows it, and today's value, as the book prints them."""
+    sheet = errata_markdown(evaluation)
+    assert "the book's 5.9742·10²⁴ is the IAU 1976 value; today it is 5.9722·10²⁴." in sheet
+    assert "the book's 6.672E-11 is the CODATA 1973 value; today it is 6.674E-11." in sheet
+
+
 def test_a_report_of_the_whole_book_names_no_selection(report_dir: Path) -> None:
     assert 'id="selection"' not in (report_dir / "index.html").read_text("utf-8")
     assert json.loads((report_dir / "claims.json").read_text("utf-8"))["meta"]["chapters"] is None

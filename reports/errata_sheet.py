@@ -77,6 +77,9 @@ def error_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
     return rows
 
 
+_E_NOTATION = re.compile(r"(-?\d+(?:\.\d+)?)[eE]([+-]?\d+)")
+
+
 def _pretty(number: str) -> str:
     """A ``means`` or ``correct`` string as the book prints it: "10^40" -> "10⁴⁰"."""
     return (
@@ -84,6 +87,15 @@ def _pretty(number: str) -> str:
         if "^" not in number
         else re.sub(r"\^(-?\d+)", lambda m: m[1].translate(_SUPERSCRIPTS), number)
     )
+
+
+def _superscript_power(number: str) -> str:
+    """A number in E notation as a book with superscripts prints it: "5.9742e24" ->
+    "5.9742·10²⁴" (others as they are)."""
+    power = _E_NOTATION.fullmatch(number.strip())
+    if power is None:
+        return number
+    return f"{power[1]}·10{str(int(power[2])).translate(_SUPERSCRIPTS)}"
 
 
 def _correction(claim: EvaluatedClaim) -> tuple[str, str]:
@@ -189,10 +201,14 @@ def _dated_entry(evaluation: Evaluation, c: EvaluatedClaim) -> list[str]:
     entry = constants().get(key or "")
     section = c.section
     where = _where(c.chapter, c.line, section, c.equation, c.figure)
-    today = f"{entry.value:g} ({entry.edition})" if entry is not None else "today's value"
+    # a garbled number (its superscript flattened: "5.9742·1024") as the book prints it, and
+    # today's value in the same style
+    style = _superscript_power if c.means else str
+    printed = style(c.means) if c.means else c.printed
+    today = f"{style(f'{entry.value:g}')} ({entry.edition})" if entry else "today's value"
     lines = [
-        f"- **{where}**: {c.quantity}: the book's {c.printed} is the {c.matched_edition} value; "
-        f"today it is {c.correct or today}."
+        f"- **{where}**: {c.quantity}: the book's {printed} is the {c.matched_edition} value; "
+        f"today it is {style(c.correct) if c.correct else today}."
     ]
     if entry is not None:
         older = next((o for o in entry.older if o.edition == c.matched_edition), None)
