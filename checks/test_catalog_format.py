@@ -108,6 +108,10 @@ def test_fmt_rewrites_in_place_and_the_verdicts_do_not_change(
     assert sorted(p.name for p in tmp_path.iterdir()) == ["ch08.toml"]  # no temporary left
     assert main(claims) == 0
     assert [json.loads(line) for line in capsys.readouterr()[0].splitlines()] == before
+    # a second run, or a check, finds nothing to do and says so (not a silent wait)
+    check = ["fmt", "--check", "--book", str(book.path), "--catalog", str(tmp_path)]
+    assert main(check) == 0
+    assert capsys.readouterr() == ("", "bangcheck: 1 catalog file(s) already in canonical form\n")
 
 
 def test_an_invalid_catalog_is_not_formatted(

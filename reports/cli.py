@@ -238,18 +238,19 @@ def _print_scan(result: ScanResult, book_lines: Sequence[str], list_missing: boo
             missing=c.missing,
         )
     rules = [name for name, _ in result.rule_counts().most_common()]
+    reasons = sorted({r for c in result.chapters.values() for r in c.reasons})
+    width = max([18, *(len(n) for n in rules), *(len("hand: " + r) for r in reasons)])
     print("\nexcluded per rule and chapter:")
-    print(f"  {'rule':<18} {'total':>6}  " + " ".join(f"{k:>5}" for k in result.chapters))
+    print(f"  {'rule':<{width}} {'total':>6}  " + " ".join(f"{k:>5}" for k in result.chapters))
     for name in rules:
         per_chapter = " ".join(f"{c.rules[name]:>5}" for c in result.chapters.values())
-        print(f"  {name:<18} {result.rule_counts()[name]:>6}  {per_chapter}")
-    reasons = sorted({r for c in result.chapters.values() for r in c.reasons})
+        print(f"  {name:<{width}} {result.rule_counts()[name]:>6}  {per_chapter}")
     for reason in reasons:
         per_chapter = " ".join(f"{c.reasons[reason]:>5}" for c in result.chapters.values())
         count = sum(c.reasons[reason] for c in result.chapters.values())
-        print(f"  {'hand: ' + reason:<18} {count:>6}  {per_chapter}")
+        print(f"  {'hand: ' + reason:<{width}} {count:>6}  {per_chapter}")
     if list_missing:
-        print("\nmissing tokens:")
+        print("\nmissing tokens:" + ("" if result.missing else " none"))
         for t in result.missing:
             text = book_lines[t.line - 1]
             print(f"  {t.line:>5}  {t.text:<12} {text[max(0, t.start - 30) : t.end + 30].strip()}")
@@ -361,15 +362,16 @@ def _fmt_catalog(args: argparse.Namespace) -> int:
 
     directory = args.catalog if args.catalog is not None else Path(str(default_directory()))
     book = load_book(book_path(args.book)) if args.book or os.environ.get(BOOK_ENV) else None
-    catalog = _catalog(args, book)
+    catalog = _catalog(args, book, note=False)
     chosen = {
         f.stem for f in catalog.files if args.chapters is None or f.meta.chapter in args.chapters
     }
-    changed = 0
+    changed = read = 0
     for path in catalog_paths(directory):
         path = Path(str(path))
         if path.stem not in chosen:
             continue
+        read += 1
         text = path.read_text(encoding="utf-8")
         formatted = format_text(text)
         if formatted == text:
@@ -383,6 +385,8 @@ def _fmt_catalog(args: argparse.Namespace) -> int:
     if args.check and changed:
         print(f"bangcheck: {changed} catalog file(s) not in canonical form", file=sys.stderr)
         return EXIT_FINDINGS
+    if not changed:
+        print(f"bangcheck: {read} catalog file(s) already in canonical form", file=sys.stderr)
     return EXIT_OK
 
 
@@ -431,10 +435,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_INTERRUPTED
 
 
-def _catalog(args: argparse.Namespace, book: Book | None) -> Catalog:
+def _catalog(args: argparse.Namespace, book: Book | None, note: bool = True) -> Catalog:
     """The validated catalog of the run. A ``--catalog`` directory that lacks some chapters is
-    a draft of the others: a note says which it holds; a ``--chapter`` it has no file for is an
-    error (``CatalogDirectoryError``), not a report of no claims."""
+    a draft of the others: a note says which it holds (unless ``note`` is false: ``fmt``
+    writes what there is); a ``--chapter`` it has no file for is an error
+    (``CatalogDirectoryError``), not a report of no claims."""
     catalog = checked_catalog(book, args.catalog)
     if args.catalog is None:
         return catalog
@@ -446,7 +451,7 @@ def _catalog(args: argparse.Namespace, book: Book | None) -> Catalog:
                 f"the catalog directory {args.catalog} has no file for chapter "
                 f"{', '.join(absent)} (it holds chapter {', '.join(held)})"
             )
-    elif book is not None and len(held) < len(book.identity.chapters):
+    elif note and book is not None and len(held) < len(book.identity.chapters):
         print(
             f"bangcheck: note: the catalog directory {args.catalog} holds chapter "
             f"{', '.join(held)} only; the other chapters are left out",
