@@ -209,14 +209,19 @@ def check_target(out: Path) -> None:
 
 def check_target_now(out: Path, log: Log = _stderr) -> None:
     """``check_target`` as a run's first word: under the lock where ``out``'s parent exists,
-    so that another run's report being swapped in is not mistaken for foreign files."""
+    so that another run's report being swapped in is not mistaken for foreign files; and
+    there, whether a directory can be made beside ``out`` as the write will (a read-only file
+    system or a denied permission is said before the work, not after it)."""
     if not out.parent.is_dir():
         check_target(out)
         return
     try:
         with locked(out.parent, log):
             check_target(out)
-    except OSError as err:  # the parent cannot be opened to lock it
+            # named as a write's staging directory, so that a run killed at this instant
+            # leaves nothing the next run's clean-up does not remove
+            os.rmdir(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
+    except OSError as err:  # the parent cannot be opened to lock it, or written in
         raise _unwritable(out, err) from err
 
 
