@@ -205,4 +205,6 @@ def test_every_input_interval_contains_its_own_model_value(evaluation: Evaluatio
         if not lo <= ctx.model <= hi or centre is None or not lo <= centre <= hi:
             outside.append((ident, float(ctx.model), centre, float(lo), float(hi)))
     assert not outside
-    assert sum(c.interval is not None for c in evaluation) >= 10  # the test has intervals to see
+    # the test has intervals to see (9: claims whose book used a rounded intermediate; three
+    # fewer since the weight and pull of the starlet and the escape speed are judged exactly)
+    assert sum(c.interval is not None for c in evaluation) >= 5
