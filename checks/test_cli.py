@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 from reference.book import Book, chapter_keys
-from reference.evaluation import evaluate_catalog
+from reference.evaluation import Evaluation, evaluate_catalog
 from reference.validate import checked_catalog
 from reports.cli import main
 
@@ -251,15 +251,20 @@ def test_a_draft_of_some_chapters_says_which_and_refuses_the_others(
     assert "holds chapter" not in err
 
 
-def test_an_evaluation_knows_whether_it_is_of_some_chapters(book: Book, tmp_path: Path) -> None:
-    """What a report of some chapters names (``Evaluation.chapters``): the chapters asked for,
-    in book order; None when every chapter was asked for, as the commands do by default."""
+def test_an_evaluation_knows_whether_it_is_of_some_chapters(
+    book: Book, tmp_path: Path, evaluation: Evaluation
+) -> None:
+    """What a report of some chapters names (``Evaluation.chapters``): the chapters evaluated,
+    those asked for that the catalog holds, in book order; None when that is every chapter,
+    as for the session's evaluation of the whole catalog."""
+    assert evaluation.chapters is None
     draft = tmp_path / "draft"
     draft.mkdir()
-    shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / "chA1.toml", draft)
+    for name in ("ch00.toml", "chA1.toml"):
+        shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / name, draft)
     catalog = checked_catalog(book, draft)
-    assert evaluate_catalog(catalog, book, chapter_keys(None)).chapters is None
-    assert evaluate_catalog(catalog, book, chapter_keys("A1,0")).chapters == ("0", "A1")
+    assert evaluate_catalog(catalog, book, chapter_keys(None)).chapters == ("0", "A1")
+    assert evaluate_catalog(catalog, book, chapter_keys("A1,8")).chapters == ("A1",)
 
 
 def test_the_common_options_may_come_before_the_command(

@@ -433,16 +433,17 @@ def evaluate_catalog(
         dict(evaluator.contexts),
         centres,
         outcomes,
-        _selection(book, wanted),
+        _selection(book, catalog, wanted),
     )
 
 
-def _selection(book: Book, wanted: set[str] | None) -> tuple[str, ...] | None:
-    """The chapters of a run of some chapters, in book order; None for the whole book."""
+def _selection(book: Book, catalog: Catalog, wanted: set[str] | None) -> tuple[str, ...] | None:
+    """The chapters a run evaluated, in book order: those asked for that the catalog holds (a
+    draft may hold some only); None when that is every chapter of the book."""
+    held = {f.meta.chapter for f in catalog.files}
     keys = [c.key for c in book.identity.chapters]
-    if wanted is None or wanted.issuperset(keys):
-        return None
-    return tuple(k for k in keys if k in wanted)
+    chosen = [k for k in keys if k in held and (wanted is None or k in wanted)]
+    return None if chosen == keys else tuple(chosen)
 
 
 def evaluate(
