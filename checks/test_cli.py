@@ -251,6 +251,45 @@ def test_a_draft_of_some_chapters_says_which_and_refuses_the_others(
     assert "holds chapter" not in err
 
 
+def test_a_draft_is_scanned_judged_and_reported_as_the_chapters_it_holds(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Without ``--chapter``, a draft of chapters 0 and A1 is what ``--chapter 0,A1`` is: its
+    scan counts those chapters' tokens, ``power`` does not judge it by the whole book's
+    targets, and its report says whose it is."""
+    draft = tmp_path / "draft"
+    draft.mkdir()
+    for name in ("ch00.toml", "chA1.toml"):
+        shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / name, draft)
+    common = ["--book", str(book.path), "--catalog", str(draft)]
+    code, scanned, _ = run(capsys, "scan", *common)
+    assert code == 0
+    assert (code, scanned) == run(capsys, "scan", *common, "--chapter", "0,A1")[:2]
+    code, out, err = run(capsys, "power", *common)
+    assert code == 0
+    assert "(the targets are the whole book's" in out
+    assert "holds chapters 0 and A1 only" in err
+    assert run(capsys, "report", *common, "--out", str(tmp_path / "out"))[0] == 0
+    page = (tmp_path / "out" / "index.html").read_text(encoding="utf-8")
+    assert 'id="selection"><strong>Chapters 0 and A1 only</strong>' in page
+    assert "<strong>Below target:</strong>" not in page
+    meta = json.loads((tmp_path / "out" / "claims.json").read_text(encoding="utf-8"))["meta"]
+    assert meta["chapters"] == ["0", "A1"]
+    assert sorted(meta["coverage"]) == ["0", "A1"]
+
+
+def test_a_draft_that_refers_to_a_chapter_it_lacks_says_which_file_to_add(
+    book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    draft = tmp_path / "draft"
+    draft.mkdir()
+    shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / "ch03.toml", draft)
+    code, _, err = run(capsys, "claims", "--book", str(book.path), "--catalog", str(draft))
+    assert code == 2
+    assert "of ch02.toml, a file this catalog directory does not hold" in err
+    assert "copy ch02.toml too" in err
+
+
 def test_an_evaluation_knows_whether_it_is_of_some_chapters(
     book: Book, tmp_path: Path, evaluation: Evaluation
 ) -> None:

@@ -61,6 +61,17 @@ class _Checker(ClaimRules):
     """All the rules: each entry's own (``ClaimRules``) and those across the catalog."""
 
     # -- across the catalog ---------------------------------------------------------------
+    def unknown(self, ref: str) -> str:
+        """The problem of a reference to no claim: in a catalog directory that lacks the file
+        of the claim's chapter (a draft of some chapters), say which file to add."""
+        stem = ref.split(".", 1)[0]
+        if stem not in {f.stem for f in self.catalog.files}:
+            return (
+                f"refers to {ref!r} of {stem}.toml, a file this catalog directory does not "
+                f"hold (a draft needs the files its claims refer to: copy {stem}.toml too)"
+            )
+        return f"refers to an unknown claim {ref!r}"
+
     def check_links(self) -> None:
         by_id = self.catalog.by_id()
         file_of = self.catalog.file_of()
@@ -70,7 +81,7 @@ class _Checker(ClaimRules):
                 used.add(ref)
                 if ref not in by_id and ref not in self.catalog.rejected:
                     field = "restates" if ref == c.restates else "args"
-                    self.add(f, c.id, field, f"refers to an unknown claim {ref!r}")
+                    self.add(f, c.id, field, self.unknown(ref))
                 elif ref == c.id:
                     self.add(f, c.id, "args", "a claim cannot refer to itself")
                 elif ref in by_id and ref != c.restates and by_id[ref].relation != "=":
@@ -117,8 +128,8 @@ class _Checker(ClaimRules):
         (or the same line), itself naming no other (no chains)."""
         add = lambda msg: self.add(f, c.id, "same_error", msg)  # noqa: E731
         if first is None:
-            if c.same_error not in self.catalog.rejected:
-                add(f"refers to an unknown claim {c.same_error!r}")
+            if c.same_error is not None and c.same_error not in self.catalog.rejected:
+                add(self.unknown(c.same_error))
         elif first.expect != "erratum" or first.id == c.id:
             add(f"{first.id} is not another erratum")
         elif first.same_error is not None:

@@ -26,7 +26,7 @@ from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
 from reports import bangcheck_version
-from reports.errata_sheet import verdict_summary
+from reports.errata_sheet import chapters_named, verdict_summary
 from reports.invariants import (
     CACHE_DIR,
     PROPERTIES_FILE,
@@ -313,7 +313,7 @@ def _power(args: argparse.Namespace) -> int:
     catalog = _catalog(args, book)
     evaluation = evaluate_catalog(catalog, book, args.chapters, progress=True)
     report = evaluation.power()
-    whole_book = args.chapter is None
+    whole_book = evaluation.chapters is None  # the targets are the whole book's
     if args.json:
         print(json.dumps(report.to_json(), ensure_ascii=False))
     else:
@@ -448,15 +448,18 @@ def _catalog(args: argparse.Namespace, book: Book | None, note: bool = True) -> 
         absent = [key for key in args.chapters if key not in held]
         if absent:
             raise CatalogDirectoryError(
-                f"the catalog directory {args.catalog} has no file for chapter "
-                f"{', '.join(absent)} (it holds chapter {', '.join(held)})"
+                f"the catalog directory {args.catalog} has no file for "
+                f"{chapters_named(absent)} (it holds {chapters_named(held)})"
             )
     elif note and book is not None and len(held) < len(book.identity.chapters):
         print(
-            f"bangcheck: note: the catalog directory {args.catalog} holds chapter "
-            f"{', '.join(held)} only; the other chapters are left out",
+            f"bangcheck: note: the catalog directory {args.catalog} holds "
+            f"{chapters_named(held)} only; the other chapters are left out",
             file=sys.stderr,
         )
+    # every command then works on the chapters the draft holds: its scan, power and report
+    # are of those chapters, as with --chapter
+    args.chapters = tuple(key for key in args.chapters if key in held)
     return catalog
 
 

@@ -6,7 +6,7 @@
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from typing import Any
 
 from reference.errata import Error
@@ -154,14 +154,20 @@ def _count(n: int, one: str, many: str | None = None) -> str:
     return f"{n} {one if n == 1 else many or one + 's'}"
 
 
+def chapters_named(keys: Sequence[str]) -> str:
+    """ "chapter 8", "chapters 4 and 9", "chapters 0, 4 and 7"."""
+    if len(keys) == 1:
+        return f"chapter {keys[0]}"
+    return f"chapters {', '.join(keys[:-1])} and {keys[-1]}"
+
+
 def _selection(evaluation: Evaluation) -> str:
     """What a sheet of some chapters says first: "Chapters 8 and 9 only: "; nothing for all."""
     chapters = evaluation.chapters
     if chapters is None:
         return ""
-    if len(chapters) == 1:
-        return f"Chapter {chapters[0]} only: "
-    return f"Chapters {', '.join(chapters[:-1])} and {chapters[-1]} only: "
+    named = chapters_named(chapters)
+    return named[0].upper() + named[1:] + " only: "
 
 
 def errata_markdown(evaluation: Evaluation) -> str:

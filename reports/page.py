@@ -98,7 +98,10 @@ def _power_section(evaluation: Evaluation) -> dict[str, Any]:
     """The detection power (design 3a) as the page shows it: rates per class and per chapter,
     the targets missed, and every claim that lets a last-digit misprint through, with why."""
     report = evaluation.power()
-    whole_book = len(evaluation) == sum(1 for _ in evaluation.catalog.claims())
+    # the targets are the whole book's: not for a report of some chapters (or of a sample)
+    whole_book = evaluation.chapters is None and len(evaluation) == sum(
+        1 for _ in evaluation.catalog.claims()
+    )
     letting_through: dict[str, dict[str, Any]] = {}
     for miss in report.misses:
         if miss.cls != "last-digit":
