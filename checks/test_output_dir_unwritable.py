@@ -78,6 +78,36 @@ def test_unwritable_output_is_one_line_and_keeps_the_previous_report(
         assert err.splitlines() == [err.splitlines()[-1]]
 
 
+@pytest.mark.parametrize(
+    ("code", "shown"),
+    [(errno.EACCES, "Permission denied"), (errno.ENOENT, "no directory can be made there")],
+)
+def test_an_unwritable_place_under_missing_parents_is_said_before_the_work(
+    tmp_path: Path,
+    book: Book,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+    code: int,
+    shown: str,
+) -> None:
+    """``--out`` under directories still to be made, in a place where none can be made: one
+    line naming the nearest directory that exists (not a probe's name), before the catalog is
+    evaluated, and nothing made."""
+
+    def fail(*args: object, dir: str = "", **kwargs: object) -> None:
+        raise OSError(code, os.strerror(code), os.path.join(dir, ".bangcheck-probe-x"))
+
+    monkeypatch.setattr(tempfile, "mkdtemp", fail)
+    out = tmp_path / "a" / "b" / "out"
+    exit_code, err = report(capsys, book, out)
+    assert exit_code == 2
+    assert err.splitlines() == [
+        f"bangcheck: error: cannot write the report to {out}: {shown} ({tmp_path}); the "
+        "previous report, if any, is unchanged"
+    ]
+    assert os.listdir(tmp_path) == []
+
+
 def test_a_failed_second_rename_puts_the_previous_report_back(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

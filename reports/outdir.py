@@ -214,15 +214,35 @@ def check_target_now(out: Path, log: Log = _stderr) -> None:
     system or a denied permission is said before the work, not after it)."""
     if not out.parent.is_dir():
         check_target(out)
+        _probe(out, _nearest_directory(out.parent), ".bangcheck-probe-")
         return
     try:
         with locked(out.parent, log):
             check_target(out)
             # named as a write's staging directory, so that a run killed at this instant
             # leaves nothing the next run's clean-up does not remove
-            os.rmdir(tempfile.mkdtemp(prefix=f".{out.name}.new-", dir=out.parent))
-    except OSError as err:  # the parent cannot be opened to lock it, or written in
+            _probe(out, out.parent, f".{out.name}.new-")
+    except OSError as err:  # the parent cannot be opened to lock it
         raise _unwritable(out, err) from err
+
+
+def _nearest_directory(path: Path) -> Path:
+    """``path`` or its nearest ancestor that exists (where the write will make directories)."""
+    while not path.is_dir() and path != path.parent:
+        path = path.parent
+    return path
+
+
+def _probe(out: Path, directory: Path, prefix: str) -> None:
+    """Make and remove an empty directory in ``directory``, as the write will: an
+    ``OutputError`` naming ``directory`` (not the probe) where that cannot be done."""
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=prefix, dir=directory))
+    except OSError as err:
+        reason = err.strerror or str(err)
+        if err.errno == errno.ENOENT:  # e.g. /proc: it exists, and nothing can be made in it
+            reason = "no directory can be made there"
+        raise _unwritable(out, OSError(err.errno, reason, str(directory))) from err
 
 
 @contextlib.contextmanager
