@@ -292,6 +292,22 @@ def test_the_packaged_catalog_is_named_by_its_place_in_the_project(book: Book) -
     assert display_name(path, packaged=True) == "reference/claims/ch08.toml"
 
 
+@pytest.mark.parametrize("name", ["ch4.toml", "ch08-old.toml"])
+def test_a_file_no_chapter_is_named_by_is_one_problem(
+    tmp_path: Path, book: Book, name: str
+) -> None:
+    """A typo in a draft's file name, or a backup copy beside the file, is the one problem
+    of that file: not one 'must start with' or 'duplicate id' per entry."""
+    (tmp_path / "ch08.toml").write_text(META + GIVENS + V3, encoding="utf-8")
+    (tmp_path / name).write_text(META + GIVENS + V3, encoding="utf-8")
+    with pytest.raises(CatalogError) as error:
+        checked_catalog(book, tmp_path)
+    assert [str(p) for p in error.value.problems] == [
+        f"{tmp_path / name}: not a chapter's file name (they are ch00.toml ... chA1.toml): "
+        "rename it, or move it out of the catalog directory"
+    ]
+
+
 def test_bad_toml_names_the_file(tmp_path: Path, book: Book) -> None:
     found = one_problem(tmp_path, book, META + "[[claim]\nid = ")
     assert "not valid TOML" in found.message

@@ -117,13 +117,22 @@ class ClaimRules:
         self.problems.append(Problem(f.name, ident, field, message))
 
     # -- files -------------------------------------------------------------------------
-    def check_file(self, f: ChapterFile) -> None:
+    def check_file(self, f: ChapterFile) -> bool:
+        """The file's name and ``[meta]``; False for a file no chapter is named by (a typo, a
+        backup copy), whose entries are then not checked: the name is the one problem."""
         ident = identity()
         keys = {c.file_stem: c for c in ident.chapters}
         chapter = keys.get(f.stem)
         if chapter is None:
-            self.add(f, "meta", "-", f"no chapter has file name {f.stem}.toml")
-            return
+            names = f"{ident.chapters[0].file_stem}.toml ... {ident.chapters[-1].file_stem}.toml"
+            self.add(
+                f,
+                "-",
+                "-",
+                f"not a chapter's file name (they are {names}): rename it, or move it out of "
+                "the catalog directory",
+            )
+            return False
         if f.meta.chapter != chapter.key:
             self.add(
                 f, "meta", "chapter", f"is {f.meta.chapter!r}, the file is chapter {chapter.key!r}"
@@ -135,6 +144,7 @@ class ClaimRules:
                 "lines",
                 f"is {f.meta.lines}, the chapter is [{chapter.start}, {chapter.end}] (book.toml)",
             )
+        return True
 
     # -- claims ------------------------------------------------------------------------
     def check_claim(self, f: ChapterFile, c: Claim) -> None:

@@ -157,7 +157,8 @@ class _Checker(ClaimRules):
 
     def run(self) -> list[Problem]:
         for f in self.catalog.files:
-            self.check_file(f)
+            if not self.check_file(f):
+                continue
             for c in f.claims:
                 self.check_claim(f, c)
             for e in f.excluded:
