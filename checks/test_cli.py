@@ -15,6 +15,7 @@ from reference.book import Book, chapter_keys
 from reference.evaluation import Evaluation, evaluate_catalog
 from reference.validate import checked_catalog
 from reports.cli import main
+from reports.errata_sheet import errata_markdown
 
 pytestmark = pytest.mark.integrity
 
@@ -218,9 +219,13 @@ def test_an_erratum_whose_model_misses_its_correct_value_says_so(
     assert code == 1
     assert re.search(
         r"1 claim\(s\) differ from the catalog:\n  ch08\.[\w.-]+ \(line \d+\): the model "
-        r"disagrees with the catalog's correct value 0\.09\n",
+        r"gives 0\.0769\d+, not the catalog's correct value 0\.09\n",
         err,
     )
+    # the errata sheet, what a publisher reads, does not print the correction as confirmed
+    evaluation = evaluate_catalog(checked_catalog(book, tmp_path / "draft"), book, ("8",))
+    sheet = errata_markdown(evaluation)
+    assert re.search(r"\n  NOT CONFIRMED: ch08\.[\w.-]+: the model gives 0\.0769", sheet)
 
 
 def test_a_draft_of_some_chapters_says_which_and_refuses_the_others(

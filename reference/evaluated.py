@@ -105,7 +105,9 @@ class EvaluatedClaim:
             found = self.matched_edition or "no edition"
             return f"matched {found}, the catalog names {self.edition}"
         if self.expect == "erratum" and self.correct_agrees is not True:
-            return f"the model disagrees with the catalog's correct value {self.correct}"
+            model = self.model_expression if self.kind == "formula" else self.model_value
+            shown = f"{model:.10g}" if isinstance(model, float) else str(model)
+            return f"the model gives {shown}, not the catalog's correct value {self.correct}"
         return None
 
     def to_json(self) -> dict[str, Any]:

@@ -141,6 +141,9 @@ def _entry(evaluation: Evaluation, error: Error) -> list[str]:
         f"for “{before}” read “{after}”" for before, after in map(_correction, members)
     )
     lines = [f"- **{where}**: {fixes}."]
+    # a correction the catalog states but the model does not confirm is not to be published
+    # as it stands (the command exits 1 and names it)
+    lines += [f"  NOT CONFIRMED: {m.id}: {m.failure}." for m in members if not m.passed]
     if error.summary:
         lines.append(f"  {error.summary}")
     source = _source(error.first.constant)
