@@ -179,11 +179,17 @@ def describe_difference(data: bytes, ident: Identity) -> str:
     ]
     parts = [hint] if hint else []
     if len(lines) != ident.lines:
-        parts.append(f"it has {len(lines):,} lines, the book {ident.lines:,}")
+        count = f"{len(lines):,} line{'' if len(lines) == 1 else 's'}"
+        parts.append(f"it has {count}, the book {ident.lines:,}")
         if differ:
             parts.append(f"the first line that differs is line {differ[0]}")
         elif len(lines) < ident.lines:
-            parts.append(f"they are the book's first {len(lines):,}: the rest is missing")
+            first = (
+                "it is the book's first"
+                if len(lines) == 1
+                else f"they are the book's first {len(lines):,}"
+            )
+            parts.append(f"{first}: the rest is missing")
         else:
             parts.append(f"the book's lines are all there, {len(lines) - ident.lines:,} more after")
     elif differ:
@@ -248,6 +254,11 @@ def chapter_keys(spec: str | int | Iterable[str | int] | None) -> tuple[str, ...
     chosen: list[str] = []
     for part in spec.split(","):
         part = part.strip()
+        if not part:
+            raise ValueError(
+                f"empty part in chapter spec {spec!r}: give e.g. 8, 0-3, 4,5 or A1 "
+                f"(chapters {listed})"
+            )
         lo, sep, hi = part.partition("-")
         if sep:
             lo, hi = _chapter_key(lo), _chapter_key(hi)
