@@ -185,7 +185,7 @@ def describe_difference(data: bytes, ident: Identity) -> str:
             parts.append(f"the first line that differs is line {differ[0]}")
         elif len(lines) < ident.lines:
             first = (
-                "it is the book's first"
+                "it is the book's first line"
                 if len(lines) == 1
                 else f"they are the book's first {len(lines):,}"
             )
