@@ -438,8 +438,9 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _catalog(args: argparse.Namespace, book: Book | None, note: bool = True) -> Catalog:
     """The validated catalog of the run. A ``--catalog`` directory that lacks some chapters is
     a draft of the others: a note says which it holds (unless ``note`` is false: ``fmt``
-    writes what there is); a ``--chapter`` it has no file for is an error
-    (``CatalogDirectoryError``), not a report of no claims."""
+    writes what there is), and ``args.chapters`` becomes the chapters it holds, so that the
+    command works on those as with ``--chapter``; a ``--chapter`` it has no file for is an
+    error (``CatalogDirectoryError``), not a report of no claims."""
     catalog = checked_catalog(book, args.catalog)
     if args.catalog is None:
         return catalog
