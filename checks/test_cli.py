@@ -26,6 +26,18 @@ def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
     return code, out, err
 
 
+CLAIMS = Path(__file__).parents[1] / "reference" / "claims"
+
+
+def draft_of(tmp_path: Path, *names: str) -> Path:
+    """A ``--catalog`` draft directory holding copies of the packaged chapter files ``names``."""
+    draft = tmp_path / "draft"
+    draft.mkdir()
+    for name in names:
+        shutil.copy(CLAIMS / name, draft)
+    return draft
+
+
 def test_claims_json_lists_every_claim(book: Book, capsys: pytest.CaptureFixture[str]) -> None:
     code, out, err = run(capsys, "claims", "--json", "--chapter", "8-9", "--book", str(book.path))
     rows = [json.loads(line) for line in out.splitlines()]
@@ -57,7 +69,7 @@ def test_claims_verdict_filter_and_chapter(book: Book, capsys: pytest.CaptureFix
 def test_claims_exit_one_when_a_verdict_differs(
     book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    source = Path(__file__).parents[1] / "reference" / "claims" / "ch08.toml"
+    source = CLAIMS / "ch08.toml"
     text = source.read_text(encoding="utf-8")
     wrong = text.replace(
         'pick = "velocities[2]"\nexpect = "verified"', 'pick = "velocities[1]"\nexpect = "verified"'
@@ -134,7 +146,7 @@ def test_report_exits_one_and_marks_claims_that_differ_from_expect(
 ) -> None:
     """A claim whose verdict is not its ``expect`` (a catalog or model bug) fails ``report`` as
     it fails ``claims``; the report is still written, and says so on the page."""
-    source = Path(__file__).parents[1] / "reference" / "claims" / "ch00.toml"
+    source = CLAIMS / "ch00.toml"
     text = source.read_text(encoding="utf-8")
     draft = text.replace(
         'constant = "principia-later-editions-century"\nexpect = "verified"',
@@ -208,7 +220,7 @@ def test_an_erratum_whose_model_misses_its_correct_value_says_so(
 ) -> None:
     """The verdict is the expected erratum, but the model disagrees with the catalog's
     ``correct``: ``claims`` exits 1 and names that cause, not a verdict mismatch."""
-    text = (Path(__file__).parents[1] / "reference" / "claims" / "ch08.toml").read_text("utf-8")
+    text = (CLAIMS / "ch08.toml").read_text("utf-8")
     draft = text.replace('correct = "0.077"', 'correct = "0.09"', 1)
     assert draft != text
     (tmp_path / "draft").mkdir()
@@ -234,9 +246,7 @@ def test_a_draft_of_some_chapters_says_which_and_refuses_the_others(
     """A ``--catalog`` directory of one chapter's file is a draft of that chapter: the whole
     run says so on stderr; asking for a chapter it has no file for is an error (exit 2), not
     a report of no claims."""
-    draft = tmp_path / "draft"
-    draft.mkdir()
-    shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / "ch08.toml", draft)
+    draft = draft_of(tmp_path, "ch08.toml")
     code, _, err = run(capsys, "claims", "--catalog", str(draft), "--book", str(book.path))
     assert code == 0
     assert f"the catalog directory {draft} holds chapter 8 only" in err
@@ -262,10 +272,7 @@ def test_a_draft_is_scanned_judged_and_reported_as_the_chapters_it_holds(
     """Without ``--chapter``, a draft of chapters 0 and A1 is what ``--chapter 0,A1`` is: its
     scan counts those chapters' tokens, ``power`` does not judge it by the whole book's
     targets, and its report says whose it is."""
-    draft = tmp_path / "draft"
-    draft.mkdir()
-    for name in ("ch00.toml", "chA1.toml"):
-        shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / name, draft)
+    draft = draft_of(tmp_path, "ch00.toml", "chA1.toml")
     common = ["--book", str(book.path), "--catalog", str(draft)]
     code, scanned, _ = run(capsys, "scan", *common)
     assert code == 0
@@ -286,9 +293,7 @@ def test_a_draft_is_scanned_judged_and_reported_as_the_chapters_it_holds(
 def test_a_draft_that_refers_to_a_chapter_it_lacks_says_which_file_to_add(
     book: Book, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    draft = tmp_path / "draft"
-    draft.mkdir()
-    shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / "ch03.toml", draft)
+    draft = draft_of(tmp_path, "ch03.toml")
     code, _, err = run(capsys, "claims", "--book", str(book.path), "--catalog", str(draft))
     assert code == 2
     assert "of ch02.toml, a file this catalog directory does not hold" in err
@@ -302,10 +307,7 @@ def test_an_evaluation_knows_whether_it_is_of_some_chapters(
     those asked for that the catalog holds, in book order; None when that is every chapter,
     as for the session's evaluation of the whole catalog."""
     assert evaluation.chapters is None
-    draft = tmp_path / "draft"
-    draft.mkdir()
-    for name in ("ch00.toml", "chA1.toml"):
-        shutil.copy(Path(__file__).parents[1] / "reference" / "claims" / name, draft)
+    draft = draft_of(tmp_path, "ch00.toml", "chA1.toml")
     catalog = checked_catalog(book, draft)
     assert evaluate_catalog(catalog, book, chapter_keys(None)).chapters == ("0", "A1")
     assert evaluate_catalog(catalog, book, chapter_keys("A1,8")).chapters == ("A1",)

@@ -110,11 +110,14 @@ class Book:
         return self.lines[number - 1]
 
 
-def book_path(cli_value: str | os.PathLike[str] | None = None) -> Path:
-    """The book's path from ``--book`` or else ``$BANGCHECK_BOOK``, made absolute once."""
+def book_path(
+    cli_value: str | os.PathLike[str] | None = None, given_as: str = "pass --book PATH"
+) -> Path:
+    """The book's path from ``--book`` or else ``$BANGCHECK_BOOK``, made absolute once;
+    ``given_as`` is how the caller's user gives it, for the error when neither is set."""
     value = cli_value if cli_value else os.environ.get(BOOK_ENV)
     if not value:
-        raise BookError(f"no book given: pass --book PATH or set {BOOK_ENV}")
+        raise BookError(f"no book given: {given_as} or set {BOOK_ENV}")
     return Path(value).expanduser().resolve()
 
 

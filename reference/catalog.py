@@ -45,6 +45,11 @@ class Catalog:
     files: tuple[ChapterFile, ...]
     rejected: frozenset[str] = frozenset()
 
+    @property
+    def chapters(self) -> tuple[str, ...]:
+        """The chapters the catalog has files for, in book order (a draft may hold some)."""
+        return tuple(f.meta.chapter for f in self.files)
+
     def claims(self) -> Iterator[tuple[ChapterFile, Claim]]:
         """Every claim with the file that holds it, in file order then line order."""
         for chapter_file in self.files:

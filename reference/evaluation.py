@@ -13,14 +13,13 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import os
 import sys
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 
-from reference.book import BOOK_ENV, Book, BookError, book_path, chapter_keys, load_book
+from reference.book import Book, book_path, chapter_keys, load_book
 from reference.calls import ModelCache, ModelCallError
 from reference.catalog import Catalog
 from reference.compare import Context, Edition, Judgement, Verdict, exact, inside, judge
@@ -440,9 +439,8 @@ def evaluate_catalog(
 def _selection(book: Book, catalog: Catalog, wanted: set[str] | None) -> tuple[str, ...] | None:
     """The chapters a run evaluated, in book order: those asked for that the catalog holds (a
     draft may hold some only); None when that is every chapter of the book."""
-    held = {f.meta.chapter for f in catalog.files}
     keys = [c.key for c in book.identity.chapters]
-    chosen = [k for k in keys if k in held and (wanted is None or k in wanted)]
+    chosen = [k for k in keys if k in catalog.chapters and (wanted is None or k in wanted)]
     return None if chosen == keys else tuple(chosen)
 
 
@@ -458,8 +456,6 @@ def evaluate(
     wrong book, ``CatalogError`` for an invalid catalog and ``ModelCallError`` where a model
     cannot be called as catalogued.
     """
-    if book is None and not os.environ.get(BOOK_ENV):
-        raise BookError(f"no book given: evaluate(book=PATH) or set {BOOK_ENV}")
-    the_book = load_book(book_path(book))
+    the_book = load_book(book_path(book, given_as="evaluate(book=PATH)"))
     catalog = checked_catalog(the_book)
     return evaluate_catalog(catalog, the_book, chapter_keys(chapters), progress)

@@ -26,7 +26,7 @@ from reference.scan import ScanResult, scan
 from reference.schema import CatalogError
 from reference.validate import checked_catalog
 from reports import bangcheck_version
-from reports.errata_sheet import chapters_named, verdict_summary
+from reports.errata_sheet import verdict_summary
 from reports.invariants import (
     CACHE_DIR,
     PROPERTIES_FILE,
@@ -35,7 +35,7 @@ from reports.invariants import (
     read_properties,
 )
 from reports.outdir import OutputError, check_target_now, shown, write_report_dir
-from reports.views import printed_shown
+from reports.views import chapters_named, printed_shown
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report it
@@ -363,9 +363,7 @@ def _fmt_catalog(args: argparse.Namespace) -> int:
     directory = args.catalog if args.catalog is not None else Path(str(default_directory()))
     book = load_book(book_path(args.book)) if args.book or os.environ.get(BOOK_ENV) else None
     catalog = _catalog(args, book, note=False)
-    chosen = {
-        f.stem for f in catalog.files if args.chapters is None or f.meta.chapter in args.chapters
-    }
+    chosen = {f.stem for f in catalog.files if f.meta.chapter in args.chapters}
     changed = read = 0
     for path in catalog_paths(directory):
         path = Path(str(path))
@@ -444,7 +442,7 @@ def _catalog(args: argparse.Namespace, book: Book | None, note: bool = True) -> 
     catalog = checked_catalog(book, args.catalog)
     if args.catalog is None:
         return catalog
-    held = [f.meta.chapter for f in catalog.files]
+    held = catalog.chapters
     if args.chapter is not None:  # chapters asked for by name
         absent = [key for key in args.chapters if key not in held]
         if absent:

@@ -5,16 +5,14 @@
 
 from __future__ import annotations
 
-import re
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from typing import Any
 
 from reference.errata import Error
 from reference.evaluation import EvaluatedClaim, Evaluation
 from reference.formulas import unicode_formula
 from reference.tables import constants
-
-_SUPERSCRIPTS = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+from reports.views import chapters_named, means_shown, superscript_power
 
 # The columns of design section 4, then those revision 2 appends (fixed: extend, never rename)
 ERRATA_COLUMNS = (
@@ -77,25 +75,9 @@ def error_rows(evaluation: Evaluation) -> list[dict[str, Any]]:
     return rows
 
 
-_E_NOTATION = re.compile(r"(-?\d+(?:\.\d+)?)[eE]([+-]?\d+)")
-
-
 def _pretty(number: str) -> str:
     """A ``means`` or ``correct`` string as the book prints it: "10^40" -> "10⁴⁰"."""
-    return (
-        unicode_formula(number)
-        if "^" not in number
-        else re.sub(r"\^(-?\d+)", lambda m: m[1].translate(_SUPERSCRIPTS), number)
-    )
-
-
-def _superscript_power(number: str) -> str:
-    """A number in E notation as a book with superscripts prints it: "5.9742e24" ->
-    "5.9742·10²⁴" (others as they are)."""
-    power = _E_NOTATION.fullmatch(number.strip())
-    if power is None:
-        return number
-    return f"{power[1]}·10{str(int(power[2])).translate(_SUPERSCRIPTS)}"
+    return unicode_formula(number) if "^" not in number else means_shown(number)
 
 
 def _correction(claim: EvaluatedClaim) -> tuple[str, str]:
@@ -157,13 +139,6 @@ def _count(n: int, one: str, many: str | None = None) -> str:
     return f"{n} {one if n == 1 else many or one + 's'}"
 
 
-def chapters_named(keys: Sequence[str]) -> str:
-    """ "chapter 8", "chapters 4 and 9", "chapters 0, 4 and 7"."""
-    if len(keys) == 1:
-        return f"chapter {keys[0]}"
-    return f"chapters {', '.join(keys[:-1])} and {keys[-1]}"
-
-
 def _selection(evaluation: Evaluation) -> str:
     """What a sheet of some chapters says first: "Chapters 8 and 9 only: "; nothing for all."""
     chapters = evaluation.chapters
@@ -212,7 +187,7 @@ def _dated_entry(evaluation: Evaluation, c: EvaluatedClaim) -> list[str]:
     where = _where(c.chapter, c.line, section, c.equation, c.figure)
     # a garbled number (its superscript flattened: "5.9742·1024") as the book prints it, and
     # today's value in the same style
-    style = _superscript_power if c.means else str
+    style = superscript_power if c.means else str
     printed = style(c.means) if c.means else c.printed
     today = f"{style(f'{entry.value:g}')} ({entry.edition})" if entry else "today's value"
     lines = [

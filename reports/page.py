@@ -23,7 +23,7 @@ from reports import bangcheck_version
 from reports.errata_sheet import ERRATA_COLUMNS, errata_counts, errata_markdown, error_rows
 from reports.figures import RenderedFigure, render_all, verdict_chart
 from reports.output import claims_json, csv_text
-from reports.views import claim_row, dated_card, error_card, invariants_view
+from reports.views import chapters_named, claim_row, dated_card, error_card, invariants_view
 
 EXAMPLES_PER_RULE = 3
 
@@ -205,6 +205,7 @@ def render_page(
     template = _environment().get_template("index.html.j2")
     return template.render(
         meta=report_meta(evaluation, scan),
+        selection=None if selected is None else chapters_named(selected),
         verdicts=VERDICTS,
         present=[v for v in VERDICTS if any(c.verdict == v for c in evaluation)],
         per_chapter=per_chapter,

@@ -10,6 +10,7 @@ the page.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from datetime import UTC, datetime
 from typing import Any
 
@@ -40,6 +41,25 @@ def number(value: float | list[float] | None) -> str:
 def means_shown(text: str) -> str:
     """A ``means`` string as the book would print it: "3^2" as "3²", "1e-34" as is."""
     return re.sub(r"\^(-?\d+)", lambda m: m[1].translate(_SUPERSCRIPTS), text)
+
+
+_E_NOTATION = re.compile(r"(-?\d+(?:\.\d+)?)[eE]([+-]?\d+)")
+
+
+def superscript_power(number: str) -> str:
+    """A number in E notation as a book with superscripts prints it: "5.9742e24" ->
+    "5.9742·10²⁴" (others as they are)."""
+    power = _E_NOTATION.fullmatch(number.strip())
+    if power is None:
+        return number
+    return f"{power[1]}·10{str(int(power[2])).translate(_SUPERSCRIPTS)}"
+
+
+def chapters_named(keys: Sequence[str]) -> str:
+    """ "chapter 8", "chapters 4 and 9", "chapters 0, 4 and 7"."""
+    if len(keys) == 1:
+        return f"chapter {keys[0]}"
+    return f"chapters {', '.join(keys[:-1])} and {keys[-1]}"
 
 
 def printed_shown(claim: EvaluatedClaim) -> str:
